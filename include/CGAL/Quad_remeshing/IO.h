@@ -1,0 +1,320 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Robust input (polygon-soup path with repair) and output of meshes.
+
+#ifndef CGAL_QUAD_REMESHING_IO_H
+#define CGAL_QUAD_REMESHING_IO_H
+
+#include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/parameters.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstddef>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  Thrown for input that cannot be used: an unreadable, empty or malformed file, non-finite
+  coordinates, out-of-range indices, or faces that are not triangles. The message says which.
+*/
+class Bad_input : public std::invalid_argument
+{
+public:
+  explicit Bad_input(const std::string& what) : std::invalid_argument(what) {}
+};
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  What `read_and_repair()` found and changed.
+*/
+struct Repair_statistics
+{
+  std::size_t input_vertices = 0;             ///< points in the file
+  std::size_t input_faces = 0;                ///< polygons in the file
+  std::size_t merged_duplicate_points = 0;    ///< points removed because another point had the same position
+  std::size_t removed_degenerate_faces = 0;   ///< soup polygons with a repeated vertex, and zero-area mesh faces removed
+  std::size_t removed_duplicate_faces = 0;    ///< polygons on the same vertices as another (either orientation)
+  std::size_t removed_isolated_points = 0;    ///< points used by no face
+  std::size_t duplicated_points = 0;          ///< points duplicated to split non-manifold vertices or edges while orienting
+  bool orientation_changed = false;           ///< some faces were reversed to orient the soup consistently
+  std::size_t vertices = 0;                   ///< vertices of the repaired mesh
+  std::size_t faces = 0;                      ///< faces of the repaired mesh
+  std::size_t components = 0;                 ///< connected components of the repaired mesh
+  std::size_t boundary_cycles = 0;            ///< boundary cycles of the repaired mesh
+  double seconds = 0.;                        ///< time spent
+
+  /// true if anything was changed
+  bool repaired() const
+  {
+    return merged_duplicate_points + removed_degenerate_faces + removed_duplicate_faces + removed_isolated_points
+             + duplicated_points > 0 || orientation_changed;
+  }
+
+  /// the figures as a report record
+  Report report() const
+  {
+    Report r = Report::object();
+    r["input_vertices"] = input_vertices;
+    r["input_faces"] = input_faces;
+    r["merged_duplicate_points"] = merged_duplicate_points;
+    r["removed_degenerate_faces"] = removed_degenerate_faces;
+    r["removed_duplicate_faces"] = removed_duplicate_faces;
+    r["removed_isolated_points"] = removed_isolated_points;
+    r["duplicated_points"] = duplicated_points;
+    r["orientation_changed"] = orientation_changed;
+    r["repaired"] = repaired();
+    r["V"] = vertices;
+    r["F"] = faces;
+    r["components"] = components;
+    r["boundary_cycles"] = boundary_cycles;
+    r["seconds"] = seconds;
+    return r;
+  }
+};
+
+namespace internal {
+
+inline std::string lower_extension(const std::string& fname)
+{
+  const std::size_t dot = fname.find_last_of('.');
+  if(dot == std::string::npos || fname.find_first_of("/\\", dot) != std::string::npos) return std::string();
+  std::string ext = fname.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+inline bool is_supported_mesh_extension(const std::string& ext)
+{
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
+// CGAL's readers reject "nan"/"inf" without saying why: look for such a token (ASCII files) so
+// that the error message can name the cause.
+inline bool has_non_finite_token(const std::string& fname)
+{
+  std::ifstream in(fname);
+  std::string token;
+  while(in >> token)
+  {
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end); // also parses "nan", "inf" and overflows
+    if(end != token.c_str() && *end == '\0' && !std::isfinite(value)) return true;
+  }
+  return false;
+}
+
+// Removes the points no polygon uses and renumbers the polygons; returns the number removed.
+template <typename Point, typename Polygon>
+std::size_t remove_unused_points(std::vector<Point>& points, std::vector<Polygon>& polygons)
+{
+  std::vector<std::size_t> new_id(points.size(), std::size_t(-1));
+  for(const Polygon& p : polygons)
+    for(std::size_t v : p) new_id[v] = 0;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(new_id[i] == 0)
+    {
+      new_id[i] = n;
+      points[n++] = points[i];
+    }
+  const std::size_t removed = points.size() - n;
+  points.resize(n);
+  for(Polygon& p : polygons)
+    for(auto& v : p) v = new_id[v];
+  return removed;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+
+  reads a triangle mesh from an OFF, OBJ, PLY or STL file through the polygon-soup path and repairs it:
+  duplicate points are merged, polygons with a repeated vertex and duplicate polygons (in either
+  orientation) are removed, unused points are dropped, the soup is oriented consistently (points are
+  duplicated where needed, which splits non-manifold vertices and edges), the mesh is built, and
+  faces of zero area are removed by collapsing or flipping edges.
+
+  @tparam TriangleMesh a model of `MutableFaceGraph`
+  @tparam NamedParameters a sequence of named parameters
+
+  @param fname the file; its format is chosen from the extension (`.off`, `.obj`, `.ply`, `.stl`, any case)
+  @param tmesh the output mesh; it is cleared first
+  @param np an optional sequence of named parameters among the ones listed below
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{whether progress and what was repaired are printed to `std::cerr`}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  @return what was found and changed
+
+  @throws Bad_input if the file cannot be opened or parsed, has no face, has a non-finite coordinate,
+  an index out of range, or a face that is not a triangle; also if nothing is left after the repair.
+*/
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+Repair_statistics read_and_repair(const std::string& fname,
+                                  TriangleMesh& tmesh,
+                                  const NamedParameters& np = parameters::default_values())
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
+  typedef std::vector<std::size_t> Polygon;
+
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  CGAL::Real_timer timer;
+  timer.start();
+  Repair_statistics stats;
+
+  const std::string ext = internal::lower_extension(fname);
+  if(!internal::is_supported_mesh_extension(ext))
+    throw Bad_input("'" + fname + "': unsupported file extension (expected .off, .obj, .ply or .stl)");
+  {
+    std::ifstream probe(fname, std::ios::binary);
+    if(!probe) throw Bad_input("'" + fname + "': cannot open the file");
+    if(probe.peek() == std::ifstream::traits_type::eof()) throw Bad_input("'" + fname + "': the file is empty");
+  }
+
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  bool ok = false;
+  try {
+    ok = CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false));
+  } catch(const std::exception& e) {
+    throw Bad_input("'" + fname + "': cannot parse the file (" + e.what() + ")");
+  }
+  if(!ok)
+  {
+    if(internal::has_non_finite_token(fname))
+      throw Bad_input("'" + fname + "': a vertex has a non-finite coordinate (NaN or infinity)");
+    throw Bad_input("'" + fname + "': cannot parse the file as " + ext);
+  }
+  stats.input_vertices = points.size();
+  stats.input_faces = polygons.size();
+  if(polygons.empty()) throw Bad_input("'" + fname + "': the mesh has no face");
+
+  for(const Point& p : points)
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))
+       || !std::isfinite(CGAL::to_double(p.z())))
+      throw Bad_input("'" + fname + "': a vertex has a non-finite coordinate (NaN or infinity)");
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    if(polygons[f].size() != 3)
+      throw Bad_input("'" + fname + "': face " + std::to_string(f) + " has " + std::to_string(polygons[f].size())
+                      + " vertices; the input must be a triangle mesh");
+    for(std::size_t v : polygons[f])
+      if(v >= points.size())
+        throw Bad_input("'" + fname + "': face " + std::to_string(f) + " uses vertex " + std::to_string(v)
+                        + " but there are only " + std::to_string(points.size()));
+  }
+
+  // Soup repair, one step at a time so that the report can say what each step did.
+  stats.merged_duplicate_points = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  {
+    const std::size_t before = polygons.size();
+    polygons.erase(std::remove_if(polygons.begin(), polygons.end(),
+                                  [](const Polygon& p) { return p[0] == p[1] || p[1] == p[2] || p[2] == p[0]; }),
+                   polygons.end());
+    stats.removed_degenerate_faces = before - polygons.size();
+  }
+  stats.removed_duplicate_faces = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+  stats.removed_isolated_points = internal::remove_unused_points(points, polygons);
+  if(polygons.empty()) throw Bad_input("'" + fname + "': no valid face is left after removing degenerate faces");
+
+  const std::size_t points_before_orientation = points.size();
+  const std::vector<Polygon> polygons_before = polygons;
+  PMP::orient_polygon_soup(points, polygons);
+  stats.duplicated_points = points.size() - points_before_orientation;
+  stats.orientation_changed = (polygons != polygons_before);
+
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Bad_input("'" + fname + "': the faces cannot be turned into a manifold mesh even after repair");
+  clear(tmesh);
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, tmesh);
+
+  // Zero-area faces (collinear corners) break normals and every later stage: collapse them away.
+  const std::size_t faces_before = num_faces(tmesh);
+  if(!PMP::remove_degenerate_faces(tmesh) && verbose)
+    std::cerr << "[repair] warning: some degenerate faces could not be removed\n";
+  tmesh.collect_garbage();
+  stats.removed_degenerate_faces += faces_before - std::min(faces_before, std::size_t(num_faces(tmesh)));
+  if(num_faces(tmesh) == 0) throw Bad_input("'" + fname + "': every face is degenerate");
+
+  stats.vertices = num_vertices(tmesh);
+  stats.faces = num_faces(tmesh);
+  {
+    auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), tmesh);
+    stats.components = PMP::connected_components(tmesh, fcc);
+    std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> cycles;
+    PMP::extract_boundary_cycles(tmesh, std::back_inserter(cycles));
+    stats.boundary_cycles = cycles.size();
+  }
+  stats.seconds = timer.time();
+  if(verbose)
+  {
+    std::cerr << "[repair] " << fname << ": " << stats.input_vertices << " points, " << stats.input_faces
+              << " faces -> " << stats.vertices << " vertices, " << stats.faces << " faces, "
+              << stats.components << " component(s), " << stats.boundary_cycles << " boundary cycle(s)";
+    if(stats.repaired())
+      std::cerr << "; merged " << stats.merged_duplicate_points << " duplicate points, removed "
+                << stats.removed_degenerate_faces << " degenerate and " << stats.removed_duplicate_faces
+                << " duplicate faces and " << stats.removed_isolated_points << " unused points, duplicated "
+                << stats.duplicated_points << " points to orient" << (stats.orientation_changed ? " (faces reversed)" : "");
+    std::cerr << " (" << stats.seconds << " s)\n";
+  }
+  return stats;
+}
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+
+  writes a polygon mesh (triangles, quads or any polygons) to an OFF, OBJ or PLY file, with enough
+  digits to round-trip double coordinates.
+
+  @tparam PolygonMesh a model of `FaceListGraph`
+  @param fname the file; its format is chosen from the extension
+  @param pmesh the mesh
+  @throws std::runtime_error if the extension is not supported or the file cannot be written
+*/
+template <typename PolygonMesh>
+void write_mesh(const std::string& fname, const PolygonMesh& pmesh)
+{
+  const std::string ext = internal::lower_extension(fname);
+  if(ext != "off" && ext != "obj" && ext != "ply")
+    throw std::runtime_error("'" + fname + "': unsupported output extension (expected .off, .obj or .ply)");
+  if(!CGAL::IO::write_polygon_mesh(fname, pmesh, CGAL::parameters::stream_precision(17)))
+    throw std::runtime_error("'" + fname + "': cannot write the file");
+}
+
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_IO_H

@@ -1,0 +1,147 @@
+// Reading and repairing input meshes: bundled meshes (clean and nasty) and malformed files.
+#include "test_support.h"
+
+#include <CGAL/Quad_remeshing/IO.h>
+
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace QR = CGAL::Quad_remeshing;
+using qr_test::Mesh;
+
+std::string write_text(const std::string& name, const std::string& content)
+{
+  const std::string path = qr_test::output_file(name);
+  std::ofstream out(path);
+  out << content;
+  return path;
+}
+
+bool throws_bad_input(const std::string& path, const std::string& expected_part)
+{
+  Mesh m;
+  try {
+    QR::read_and_repair(path, m);
+  } catch(const QR::Bad_input& e) {
+    const std::string msg = e.what();
+    BOOST_TEST_MESSAGE(msg);
+    return msg.find(expected_part) != std::string::npos;
+  }
+  return false;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(io)
+
+BOOST_AUTO_TEST_CASE(clean_mesh_is_unchanged)
+{
+  Mesh m;
+  const QR::Repair_statistics s = QR::read_and_repair(qr_test::data_file("fandisk.off"), m);
+  BOOST_TEST(s.input_vertices == 6475u);
+  BOOST_TEST(s.input_faces == 12946u);
+  BOOST_TEST(!s.repaired());
+  BOOST_TEST(num_faces(m) == 12946u);
+  BOOST_TEST(s.components == 1u);
+  BOOST_TEST(s.boundary_cycles == 0u);
+  BOOST_TEST(CGAL::is_triangle_mesh(m));
+  BOOST_TEST(CGAL::is_closed(m));
+  BOOST_TEST(s.report().find("V")->number() == 6475.);
+}
+
+BOOST_AUTO_TEST_CASE(nasty_meshes_are_repaired)
+{
+  // draco_test_nm: 2 non-manifold vertices and 17 unreferenced vertices.
+  Mesh m;
+  QR::Repair_statistics s = QR::read_and_repair(qr_test::data_file("draco_test_nm.off"), m);
+  BOOST_TEST(s.removed_isolated_points == 17u);
+  BOOST_TEST(s.duplicated_points >= 2u);
+  BOOST_TEST(s.repaired());
+  BOOST_TEST(m.is_valid());
+  BOOST_TEST(CGAL::is_triangle_mesh(m));
+
+  // angle_block: 33 non-manifold vertices, slivers.
+  Mesh a;
+  s = QR::read_and_repair(qr_test::data_file("angle_block.off"), a);
+  BOOST_TEST(s.duplicated_points >= 33u);
+  BOOST_TEST(a.is_valid());
+  BOOST_TEST(num_faces(a) > 600u);
+}
+
+BOOST_AUTO_TEST_CASE(every_bundled_mesh_loads)
+{
+  for(const char* name : {"abc_00000005.off", "abc_00000008.off", "plate_holes.off", "spot.off", "fertility.off",
+                          "hemisphere.off", "xyz_cube_20mm.off", "lego.off"})
+  {
+    Mesh m;
+    const QR::Repair_statistics s = QR::read_and_repair(qr_test::data_file(name), m);
+    BOOST_TEST_INFO(name);
+    BOOST_TEST(m.is_valid());
+    BOOST_TEST(num_faces(m) > 0u);
+    BOOST_TEST(s.components == 1u);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(other_formats_round_trip)
+{
+  Mesh m;
+  QR::read_and_repair(qr_test::data_file("xyz_cube_20mm.off"), m);
+  for(const char* ext : {"obj", "ply", "off"})
+  {
+    const std::string path = qr_test::output_file(std::string("io_round_trip.") + ext);
+    QR::write_mesh(path, m);
+    Mesh r;
+    const QR::Repair_statistics s = QR::read_and_repair(path, r);
+    BOOST_TEST_INFO(ext);
+    BOOST_TEST(num_faces(r) == num_faces(m));
+    BOOST_TEST(num_vertices(r) == num_vertices(m));
+    BOOST_TEST(!s.repaired());
+  }
+  // STL is a soup: reading welds the points back into the same mesh.
+  const std::string stl = qr_test::output_file("io_round_trip.stl");
+  BOOST_TEST(CGAL::IO::write_polygon_mesh(stl, m, CGAL::parameters::stream_precision(17)));
+  Mesh r;
+  const QR::Repair_statistics s = QR::read_and_repair(stl, r);
+  BOOST_TEST(num_faces(r) == num_faces(m));
+  BOOST_TEST(num_vertices(r) == num_vertices(m));
+  BOOST_TEST(s.components == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(doubled_faces_are_merged)
+{
+  // A tetrahedron whose every face also appears reversed (like chair_doublesided).
+  const std::string path = write_text("io_doubled.off",
+    "OFF\n4 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+    "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"
+    "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 0 2 3\n");
+  Mesh m;
+  const QR::Repair_statistics s = QR::read_and_repair(path, m);
+  BOOST_TEST(s.removed_duplicate_faces == 4u);
+  BOOST_TEST(num_faces(m) == 4u);
+  BOOST_TEST(CGAL::is_closed(m));
+}
+
+BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
+{
+  BOOST_TEST(throws_bad_input(qr_test::output_file("does_not_exist.off"), "cannot open"));
+  BOOST_TEST(throws_bad_input(write_text("io_empty.off", ""), "empty"));
+  BOOST_TEST(throws_bad_input(write_text("io_garbage.off", "this is not a mesh\n"), "cannot parse"));
+  BOOST_TEST(throws_bad_input(write_text("io_noface.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"), "no face"));
+  BOOST_TEST(throws_bad_input(write_text("io_nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"), "non-finite"));
+  BOOST_TEST(throws_bad_input(write_text("io_inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"), ""));
+  BOOST_TEST(throws_bad_input(write_text("io_quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"),
+                              "triangle"));
+  BOOST_TEST(throws_bad_input(write_text("io_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n"), ""));
+  BOOST_TEST(throws_bad_input(write_text("io_degenerate.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n"),
+                              "degenerate"));
+  BOOST_TEST(throws_bad_input(write_text("io_mesh.xyz", "0 0 0\n"), "unsupported"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
