@@ -1,0 +1,330 @@
+// quad_remesh: the command-line program of CGAL Quad_remeshing.
+//
+// It calls the pipeline stages one by one (so that --until and --dump fall out naturally), records
+// each stage's figures in a JSON report and prints a summary.
+//
+// Exit codes: 0 done, 1 the pipeline failed (with the reason), 2 bad input or arguments.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Quad_remeshing/IO.h>
+#include <CGAL/Quad_remeshing/Report.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace QR = CGAL::Quad_remeshing;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3>                 Triangle_mesh;
+typedef CGAL::Surface_mesh<Kernel::Point_3>                 Quad_mesh;
+
+namespace {
+
+const std::vector<std::string> stage_names = {"repair", "features", "remesh", "field",
+                                              "layout", "quantize", "quadrangulate", "smooth"};
+
+const char* usage_text =
+  "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
+  "                   [--feature-angle DEG] [--features FILE] [--until STAGE] [--dump DIR]\n"
+  "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
+  "                   [--verbose | --quiet] [--help]\n"
+  "\n"
+  "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
+  "lines (sharp creases and boundaries) as chains of edges.\n"
+  "\n"
+  "  -o OUTPUT            output mesh (.obj, .off or .ply); default: INPUT's name with _quad.obj\n"
+  "  --edge-length L      target quad edge length (absolute units)\n"
+  "  --faces N            approximate number of output quads\n"
+  "  --scale S            multiply the default edge length by S\n"
+  "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
+  "  --features FILE      use these feature edges instead of detecting them (CGAL .polylines.txt\n"
+  "                       or one 'i j' vertex-index pair per line)\n"
+  "  --until STAGE        stop after STAGE and write its mesh as OUTPUT; stages, in order:\n"
+  "                       repair, features, remesh, field, layout, quantize, quadrangulate, smooth\n"
+  "  --dump DIR           write every finished stage's result into DIR\n"
+  "  --report FILE.json   write the figures of every stage as JSON\n"
+  "  --seed N             random seed (default 0); the same input and seed give the same output\n"
+  "  --threads N          worker threads (default 1)\n"
+  "  --time-limit S       time budget in seconds for the whole run (default: none)\n"
+  "  --verbose            print progress of every stage\n"
+  "  --quiet              print nothing but errors\n"
+  "\n"
+  "Exit codes: 0 done, 1 the pipeline failed, 2 bad input or arguments.\n";
+
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Options
+{
+  std::string input, output, features_file, until = "smooth", dump_dir, report_file;
+  double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0.;
+  long faces = 0;
+  unsigned seed = 0, threads = 1;
+  bool verbose = false, quiet = false;
+};
+
+double parse_number(const std::string& option, const std::string& text, double min_value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if(text.empty() || *end != '\0' || !std::isfinite(v) || v < min_value)
+    throw Usage_error("invalid value '" + text + "' for " + option);
+  return v;
+}
+
+Options parse_arguments(int argc, char** argv, bool& help)
+{
+  Options o;
+  help = false;
+  int density_options = 0;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw Usage_error("option " + a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--help" || a == "-h") { help = true; return o; }
+    else if(a == "-o" || a == "--output") o.output = value();
+    else if(a == "--edge-length") { o.edge_length = parse_number(a, value(), 1e-300); ++density_options; }
+    else if(a == "--faces") { o.faces = long(parse_number(a, value(), 1.)); ++density_options; }
+    else if(a == "--scale") { o.scale = parse_number(a, value(), 1e-6); ++density_options; }
+    else if(a == "--feature-angle") o.feature_angle = parse_number(a, value(), 0.);
+    else if(a == "--features") o.features_file = value();
+    else if(a == "--until")
+    {
+      o.until = value();
+      if(std::find(stage_names.begin(), stage_names.end(), o.until) == stage_names.end())
+        throw Usage_error("unknown stage '" + o.until + "' for --until");
+    }
+    else if(a == "--dump") o.dump_dir = value();
+    else if(a == "--report") o.report_file = value();
+    else if(a == "--seed") o.seed = unsigned(parse_number(a, value(), 0.));
+    else if(a == "--threads") o.threads = unsigned(parse_number(a, value(), 1.));
+    else if(a == "--time-limit") o.time_limit = parse_number(a, value(), 0.);
+    else if(a == "--verbose" || a == "-v") o.verbose = true;
+    else if(a == "--quiet" || a == "-q") o.quiet = true;
+    else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option '" + a + "'");
+    else if(o.input.empty()) o.input = a;
+    else throw Usage_error("more than one input file ('" + o.input + "', '" + a + "')");
+  }
+  if(o.input.empty()) throw Usage_error("no input file");
+  if(density_options > 1) throw Usage_error("--edge-length, --faces and --scale are exclusive");
+  if(o.verbose && o.quiet) throw Usage_error("--verbose and --quiet are exclusive");
+  if(o.output.empty())
+  {
+    std::string stem = o.input;
+    const std::size_t slash = stem.find_last_of("/\\");
+    const std::size_t dot = stem.find_last_of('.');
+    if(dot != std::string::npos && (slash == std::string::npos || dot > slash)) stem = stem.substr(0, dot);
+    o.output = stem + "_quad.obj";
+  }
+  return o;
+}
+
+// A stage that the program does not have yet: reported as such, never faked.
+struct Stage_not_available : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// Everything the stages hand to each other.
+struct Pipeline_state
+{
+  Triangle_mesh tmesh;
+  QR::Repair_statistics repair;
+};
+
+class Pipeline
+{
+public:
+  explicit Pipeline(const Options& o) : opt_(o) { report_ = QR::Report::object(); }
+
+  int run()
+  {
+    report_["status"] = "failed";
+    report_["error"] = "";
+    report_["input"]["file"] = opt_.input;
+    report_["stages"] = QR::Report::array();
+    if(!opt_.dump_dir.empty()) make_directory(opt_.dump_dir);
+
+    int exit_code = 0;
+    try {
+      for(const std::string& name : stage_names)
+      {
+        run_stage(name);
+        if(name == opt_.until) break;
+      }
+      write_output();
+      report_["status"] = "ok";
+    } catch(const QR::Bad_input& e) {
+      fail(e.what());
+      exit_code = 2;
+    } catch(const Stage_not_available& e) {
+      fail(e.what());
+      exit_code = 1;
+    } catch(const std::exception& e) {
+      fail(std::string("stage '") + current_stage_ + "' failed: " + e.what());
+      exit_code = 1;
+    }
+    write_report();
+    if(!opt_.quiet) print_summary();
+    return exit_code;
+  }
+
+private:
+  void fail(const std::string& message)
+  {
+    report_["status"] = "failed";
+    report_["error"] = message;
+    std::cerr << "quad_remesh: " << message << "\n";
+  }
+
+  void run_stage(const std::string& name)
+  {
+    current_stage_ = name;
+    if(opt_.verbose) std::cerr << "[" << name << "] start\n";
+    CGAL::Real_timer timer;
+    timer.start();
+    QR::Report stage = QR::Report::object();
+    stage["name"] = name;
+    QR::Report figures;
+    try {
+      figures = dispatch(name);
+    } catch(const Stage_not_available&) {
+      stage["status"] = "not_available";
+      stage["seconds"] = timer.time();
+      report_["stages"].push_back(stage);
+      throw;
+    } catch(...) {
+      stage["status"] = "failed";
+      stage["seconds"] = timer.time();
+      report_["stages"].push_back(stage);
+      throw;
+    }
+    stage["status"] = "ok";
+    stage["seconds"] = timer.time();
+    for(std::size_t i = 0; i < figures.keys().size(); ++i)
+      if(figures.keys()[i] != "seconds") stage[figures.keys()[i]] = figures.elements()[i];
+    report_["stages"].push_back(stage);
+    if(opt_.verbose) std::cerr << "[" << name << "] done in " << stage["seconds"].number() << " s\n";
+    last_stage_ = name;
+  }
+
+  QR::Report dispatch(const std::string& name)
+  {
+    if(name == "repair") return stage_repair();
+    throw Stage_not_available("stage '" + name + "' is not available in this version of quad_remesh");
+  }
+
+  QR::Report stage_repair()
+  {
+    state_.repair = QR::read_and_repair(opt_.input, state_.tmesh, CGAL::parameters::verbose(opt_.verbose));
+    report_["input"]["V"] = state_.repair.input_vertices;
+    report_["input"]["F"] = state_.repair.input_faces;
+    dump_mesh("1_repair.off", state_.tmesh);
+    return state_.repair.report();
+  }
+
+  void write_output()
+  {
+    // The mesh of the last finished stage is the output (triangles before the quad stages).
+    QR::write_mesh(opt_.output, state_.tmesh);
+    report_["output"]["file"] = opt_.output;
+    report_["output"]["stage"] = last_stage_;
+    report_["output"]["V"] = num_vertices(state_.tmesh);
+    report_["output"]["F"] = num_faces(state_.tmesh);
+  }
+
+  void dump_mesh(const std::string& name, const Triangle_mesh& m)
+  {
+    if(opt_.dump_dir.empty()) return;
+    QR::write_mesh(opt_.dump_dir + "/" + name, m);
+  }
+
+  static void make_directory(const std::string& dir)
+  {
+    struct stat st;
+    if(stat(dir.c_str(), &st) == 0)
+    {
+      if(!S_ISDIR(st.st_mode)) throw Usage_error("--dump: '" + dir + "' is not a directory");
+      return;
+    }
+    if(mkdir(dir.c_str(), 0755) != 0) throw Usage_error("--dump: cannot create directory '" + dir + "'");
+  }
+
+  void write_report()
+  {
+    if(opt_.report_file.empty()) return;
+    std::ofstream out(opt_.report_file);
+    if(!out) { std::cerr << "quad_remesh: cannot write the report '" << opt_.report_file << "'\n"; return; }
+    report_.write_json(out);
+    out << "\n";
+  }
+
+  void print_summary()
+  {
+    std::ostream& os = std::cout;
+    os << "quad_remesh: " << opt_.input << " -> "
+       << (report_["status"].string() == "ok" ? opt_.output : std::string("(no output)")) << "\n";
+    for(const QR::Report& s : report_["stages"].elements())
+    {
+      os << "  " << s.find("name")->string() << ": " << s.find("status")->string();
+      if(const QR::Report* sec = s.find("seconds")) os << " (" << sec->number() << " s)";
+      os << "\n";
+    }
+    if(const QR::Report* out = report_.find("output"))
+      if(out->find("V"))
+        os << "  output: " << out->find("V")->number() << " vertices, " << out->find("F")->number()
+           << " faces (after stage '" << out->find("stage")->string() << "')\n";
+    os << "  status: " << report_["status"].string();
+    if(!report_["error"].string().empty()) os << " (" << report_["error"].string() << ")";
+    os << "\n";
+  }
+
+  Options opt_;
+  QR::Report report_;
+  Pipeline_state state_;
+  std::string current_stage_, last_stage_;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  try {
+    bool help = false;
+    options = parse_arguments(argc, argv, help);
+    if(help) { std::cout << usage_text; return 0; }
+  } catch(const Usage_error& e) {
+    std::cerr << "quad_remesh: " << e.what() << "\n\n" << usage_text;
+    return 2;
+  }
+  try {
+    Pipeline pipeline(options);
+    return pipeline.run();
+  } catch(const Usage_error& e) {
+    std::cerr << "quad_remesh: " << e.what() << "\n";
+    return 2;
+  } catch(const std::exception& e) {
+    std::cerr << "quad_remesh: unexpected error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,13 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Umbrella header of the CGAL Quad_remeshing package: includes every public header.
+
+#ifndef CGAL_QUAD_REMESHING_H
+#define CGAL_QUAD_REMESHING_H
+
+#include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/IO.h>
+
+#endif // CGAL_QUAD_REMESHING_H

@@ -1,0 +1,34 @@
+# Tests of the command-line program quad_remesh (exit codes, report, output files).
+set(QR_CLI_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli)
+file(MAKE_DIRECTORY ${QR_CLI_OUT})
+set(QR_MESHES ${QR_DATA_DIR}/meshes)
+
+function(qr_cli_test name expected_exit)
+  cmake_parse_arguments(T "" "FILE;FILE_MATCHES;OUTPUT_MATCHES" "ARGS" ${ARGN})
+  set(defs -DEXPECTED_EXIT=${expected_exit})
+  if(T_FILE)
+    list(APPEND defs -DFILE=${T_FILE})
+  endif()
+  if(T_FILE_MATCHES)
+    list(APPEND defs "-DFILE_MATCHES=${T_FILE_MATCHES}")
+  endif()
+  if(T_OUTPUT_MATCHES)
+    list(APPEND defs "-DOUTPUT_MATCHES=${T_OUTPUT_MATCHES}")
+  endif()
+  string(REPLACE ";" "\\;" args "$<TARGET_FILE:quad_remesh>;${T_ARGS}")
+  add_test(NAME cli_${name}
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=${args}" ${defs} -P ${CMAKE_CURRENT_SOURCE_DIR}/check_command.cmake)
+endfunction()
+
+qr_cli_test(help 0 ARGS --help OUTPUT_MATCHES "usage: quad_remesh")
+qr_cli_test(no_input 2 ARGS OUTPUT_MATCHES "no input file")
+qr_cli_test(unknown_option 2 ARGS ${QR_MESHES}/fandisk.off --bogus OUTPUT_MATCHES "unknown option")
+qr_cli_test(bad_stage 2 ARGS ${QR_MESHES}/fandisk.off --until nowhere OUTPUT_MATCHES "unknown stage")
+qr_cli_test(exclusive_density 2 ARGS ${QR_MESHES}/fandisk.off --faces 100 --scale 2 OUTPUT_MATCHES "exclusive")
+qr_cli_test(missing_file 2 ARGS ${QR_CLI_OUT}/missing.off --report ${QR_CLI_OUT}/missing.json
+            FILE ${QR_CLI_OUT}/missing.json FILE_MATCHES "\"status\": \"failed\".*cannot open")
+qr_cli_test(until_repair_nasty 0
+            ARGS ${QR_MESHES}/draco_test_nm.off --until repair -o ${QR_CLI_OUT}/draco_repaired.off
+                 --report ${QR_CLI_OUT}/draco.json --dump ${QR_CLI_OUT}/draco_dump --quiet
+            FILE ${QR_CLI_OUT}/draco.json
+            FILE_MATCHES "\"status\": \"ok\".*\"name\": \"repair\".*\"removed_isolated_points\": 17.*\"output\"")
