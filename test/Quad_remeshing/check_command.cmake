@@ -1,5 +1,6 @@
 # Runs a command and checks its exit code and, optionally, the content of a file it writes.
-# -DCOMMAND="a;b;c" -DEXPECTED_EXIT=N [-DFILE=f -DFILE_MATCHES=regex] [-DOUTPUT_MATCHES=regex]
+# -DCOMMAND="a|b|c" -DEXPECTED_EXIT=N [-DFILE=f -DFILE_MATCHES=regex] [-DOUTPUT_MATCHES=regex]
+string(REPLACE "|" ";" COMMAND "${COMMAND}")
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT rc EQUAL EXPECTED_EXIT)
