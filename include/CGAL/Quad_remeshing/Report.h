@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
@@ -100,7 +101,115 @@ public:
     return os.str();
   }
 
+  /// Parses JSON text (as written by `write_json()`; numbers, strings with the usual escapes,
+  /// `true`/`false`/`null`, arrays and objects). Throws `std::runtime_error` on malformed text.
+  static Report parse(const std::string& text)
+  {
+    std::size_t pos = 0;
+    Report r = parse_value(text, pos);
+    skip_space(text, pos);
+    if(pos != text.size()) throw std::runtime_error("Report::parse: trailing characters");
+    return r;
+  }
+
 private:
+  static void skip_space(const std::string& t, std::size_t& pos)
+  {
+    while(pos < t.size() && (t[pos] == ' ' || t[pos] == '\n' || t[pos] == '\t' || t[pos] == '\r')) ++pos;
+  }
+
+  static void expect(const std::string& t, std::size_t& pos, char c)
+  {
+    skip_space(t, pos);
+    if(pos >= t.size() || t[pos] != c) throw std::runtime_error(std::string("Report::parse: expected '") + c + "'");
+    ++pos;
+  }
+
+  static std::string parse_string(const std::string& t, std::size_t& pos)
+  {
+    expect(t, pos, '"');
+    std::string out;
+    while(pos < t.size() && t[pos] != '"')
+    {
+      char c = t[pos++];
+      if(c == '\\')
+      {
+        if(pos >= t.size()) break;
+        const char e = t[pos++];
+        switch(e)
+        {
+          case 'n': out += '\n'; break;
+          case 't': out += '\t'; break;
+          case 'r': out += '\r'; break;
+          case 'b': out += '\b'; break;
+          case 'f': out += '\f'; break;
+          case 'u':
+          {
+            if(pos + 4 > t.size()) throw std::runtime_error("Report::parse: bad \\u escape");
+            const unsigned code = unsigned(std::stoul(t.substr(pos, 4), nullptr, 16));
+            pos += 4;
+            out += code < 0x80 ? char(code) : '?'; // the package only writes ASCII control escapes
+            break;
+          }
+          default: out += e;
+        }
+      }
+      else out += c;
+    }
+    if(pos >= t.size()) throw std::runtime_error("Report::parse: unterminated string");
+    ++pos;
+    return out;
+  }
+
+  static Report parse_value(const std::string& t, std::size_t& pos)
+  {
+    skip_space(t, pos);
+    if(pos >= t.size()) throw std::runtime_error("Report::parse: unexpected end");
+    const char c = t[pos];
+    if(c == '{')
+    {
+      ++pos;
+      Report r = object();
+      skip_space(t, pos);
+      if(pos < t.size() && t[pos] == '}') { ++pos; return r; }
+      for(;;)
+      {
+        const std::string key = parse_string(t, pos);
+        expect(t, pos, ':');
+        r[key] = parse_value(t, pos);
+        skip_space(t, pos);
+        if(pos < t.size() && t[pos] == ',') { ++pos; continue; }
+        expect(t, pos, '}');
+        return r;
+      }
+    }
+    if(c == '[')
+    {
+      ++pos;
+      Report r = array();
+      skip_space(t, pos);
+      if(pos < t.size() && t[pos] == ']') { ++pos; return r; }
+      for(;;)
+      {
+        r.push_back(parse_value(t, pos));
+        skip_space(t, pos);
+        if(pos < t.size() && t[pos] == ',') { ++pos; continue; }
+        expect(t, pos, ']');
+        return r;
+      }
+    }
+    if(c == '"') return Report(parse_string(t, pos));
+    if(t.compare(pos, 4, "true") == 0) { pos += 4; return Report(true); }
+    if(t.compare(pos, 5, "false") == 0) { pos += 5; return Report(false); }
+    if(t.compare(pos, 4, "null") == 0) { pos += 4; return Report(); }
+    const char* begin = t.c_str() + pos;
+    char* end = nullptr;
+    const double v = std::strtod(begin, &end);
+    if(end == begin) throw std::runtime_error("Report::parse: unexpected character");
+    pos += std::size_t(end - begin);
+    return Report(v);
+  }
+
   static void write_string(std::ostream& os, const std::string& s)
   {
     os << '"';
