@@ -1,0 +1,332 @@
+// quad_remesh_batch: runs quad_remesh over many meshes, one process per mesh (a crash or a time-out is
+// recorded, not fatal), and writes one CSV row and one JSON line per mesh plus a summary.
+//
+//   quad_remesh_batch [options] MESH... | --manifest FILE
+//     --exe PATH          the quad_remesh program (default: the one built next to this program)
+//     --out DIR           where outputs, reports and results go (default: batch_out)
+//     --time-limit S      per-mesh wall-clock limit; the process is killed after it (default 600)
+//     --shard I/N         process only the meshes whose index modulo N is I (for job arrays)
+//     --resume            skip meshes whose report already exists in DIR
+//     --manifest FILE     one mesh path per line ('#' starts a comment)
+//     -- ARGS...          passed on to quad_remesh (e.g. -- --until remesh --faces 2000)
+// Results: DIR/results.csv, DIR/results.jsonl (appended), DIR/summary.json, and a summary on stdout.
+
+#include <CGAL/Quad_remeshing/Report.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace QR = CGAL::Quad_remeshing;
+
+namespace {
+
+const std::vector<std::string> stage_names = {"repair", "features", "remesh", "field",
+                                              "layout", "quantize", "quadrangulate", "smooth"};
+const std::vector<std::string> quality_keys = {"I", "I_boundary", "AD", "ED", "SJ_mean", "SJ_min",
+                                               "SJ_nonpositive", "pure_quad", "manifold"};
+
+struct Options
+{
+  std::string exe, out = "batch_out", manifest;
+  double time_limit = 600.;
+  unsigned shard = 0, shards = 1;
+  bool resume = false;
+  std::vector<std::string> meshes, extra;
+};
+
+struct Run
+{
+  std::string mesh, name, status;
+  int exit_code = -1;
+  double seconds = 0.;
+  long peak_kb = 0;
+  QR::Report report;
+};
+
+std::string base_name(const std::string& path)
+{
+  std::string s = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  return s.substr(0, s.find_last_of('.'));
+}
+
+bool file_exists(const std::string& path)
+{
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+
+std::string default_exe(const char* argv0)
+{
+#ifdef QR_QUAD_REMESH_EXE
+  if(file_exists(QR_QUAD_REMESH_EXE)) return QR_QUAD_REMESH_EXE;
+#endif
+  std::string self = argv0;
+  const std::size_t slash = self.find_last_of('/');
+  return (slash == std::string::npos ? std::string(".") : self.substr(0, slash)) + "/quad_remesh";
+}
+
+// Runs one mesh in its own process group, kills it at the time limit, measures time and peak memory.
+Run run_one(const Options& o, const std::string& mesh)
+{
+  Run r;
+  r.mesh = mesh;
+  r.name = base_name(mesh);
+  const std::string report_file = o.out + "/" + r.name + ".json";
+  const std::string output_file = o.out + "/" + r.name + "_quad.obj";
+  const std::string log_file = o.out + "/" + r.name + ".log";
+  std::remove(report_file.c_str());
+
+  std::vector<std::string> args = {o.exe, mesh, "-o", output_file, "--report", report_file};
+  args.insert(args.end(), o.extra.begin(), o.extra.end());
+  std::vector<char*> argv;
+  for(std::string& a : args) argv.push_back(&a[0]);
+  argv.push_back(nullptr);
+
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if(pid < 0) { r.status = "fork_failed"; return r; }
+  if(pid == 0)
+  {
+    setpgid(0, 0);
+    FILE* log = std::fopen(log_file.c_str(), "w");
+    if(log) { dup2(fileno(log), 1); dup2(fileno(log), 2); }
+    execv(argv[0], argv.data());
+    std::perror("execv");
+    _exit(127);
+  }
+  int status = 0;
+  struct rusage usage;
+  std::memset(&usage, 0, sizeof(usage));
+  bool timed_out = false;
+  for(;;)
+  {
+    const pid_t w = wait4(pid, &status, WNOHANG, &usage);
+    if(w == pid) break;
+    if(w < 0 && errno != EINTR) break;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if(!timed_out && elapsed > o.time_limit)
+    {
+      timed_out = true;
+      kill(-pid, SIGKILL);
+      kill(pid, SIGKILL);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.peak_kb = usage.ru_maxrss;
+  if(timed_out) r.status = "timeout";
+  else if(WIFSIGNALED(status)) { r.status = "crashed"; r.exit_code = 128 + WTERMSIG(status); }
+  else
+  {
+    r.exit_code = WEXITSTATUS(status);
+    r.status = r.exit_code == 0 ? "ok" : (r.exit_code == 2 ? "bad_input" : "failed");
+  }
+  std::ifstream in(report_file);
+  if(in)
+  {
+    std::stringstream ss;
+    ss << in.rdbuf();
+    try { r.report = QR::Report::parse(ss.str()); } catch(const std::exception&) { r.status += "+bad_report"; }
+  }
+  return r;
+}
+
+std::string csv_escape(const std::string& s)
+{
+  if(s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for(char c : s) out += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string number_or_empty(const QR::Report* v)
+{
+  if(!v || v->is_null()) return "";
+  std::ostringstream os;
+  if(v->kind() == QR::Report::BOOLEAN) os << (v->boolean() ? 1 : 0);
+  else if(v->kind() == QR::Report::NUMBER) os << v->number();
+  else os << v->string();
+  return os.str();
+}
+
+const QR::Report* stage_of(const QR::Report& report, const std::string& name)
+{
+  if(const QR::Report* stages = report.find("stages"))
+    for(const QR::Report& s : stages->elements())
+      if(s.find("name") && s.find("name")->string() == name) return &s;
+  return nullptr;
+}
+
+const QR::Report* quality_of(const QR::Report& report)
+{
+  const QR::Report* out = report.find("output");
+  return out ? out->find("quality") : nullptr;
+}
+
+double percentile(std::vector<double> v, double p)
+{
+  if(v.empty()) return 0.;
+  std::sort(v.begin(), v.end());
+  const double x = p * double(v.size() - 1);
+  const std::size_t i = std::size_t(std::floor(x));
+  const std::size_t j = std::min(i + 1, v.size() - 1);
+  return v[i] + (x - double(i)) * (v[j] - v[i]);
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw std::runtime_error("option " + a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--") { for(++i; i < argc; ++i) o.extra.push_back(argv[i]); }
+    else if(a == "--exe") o.exe = value();
+    else if(a == "--out") o.out = value();
+    else if(a == "--time-limit") o.time_limit = std::stod(value());
+    else if(a == "--manifest") o.manifest = value();
+    else if(a == "--resume") o.resume = true;
+    else if(a == "--shard")
+    {
+      const std::string s = value();
+      if(std::sscanf(s.c_str(), "%u/%u", &o.shard, &o.shards) != 2 || o.shards == 0 || o.shard >= o.shards)
+        throw std::runtime_error("--shard expects I/N with 0 <= I < N");
+    }
+    else if(a == "--help" || a == "-h") throw std::runtime_error("help");
+    else if(!a.empty() && a[0] == '-') throw std::runtime_error("unknown option " + a);
+    else o.meshes.push_back(a);
+  }
+  if(!o.manifest.empty())
+  {
+    std::ifstream in(o.manifest);
+    if(!in) throw std::runtime_error("cannot read the manifest " + o.manifest);
+    std::string line;
+    while(std::getline(in, line))
+    {
+      line = line.substr(0, line.find('#'));
+      line.erase(0, line.find_first_not_of(" \t\r"));
+      line.erase(line.find_last_not_of(" \t\r") + 1);
+      if(!line.empty()) o.meshes.push_back(line);
+    }
+  }
+  if(o.meshes.empty()) throw std::runtime_error("no mesh given");
+  return o;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options o;
+  try {
+    o = parse(argc, argv);
+  } catch(const std::exception& e) {
+    if(std::string(e.what()) != "help") std::cerr << "quad_remesh_batch: " << e.what() << "\n\n";
+    std::cerr << "usage: quad_remesh_batch [--exe PATH] [--out DIR] [--time-limit S] [--shard I/N] [--resume]\n"
+                 "                         [--manifest FILE] MESH... [-- quad_remesh options]\n";
+    return 2;
+  }
+  if(o.exe.empty()) o.exe = default_exe(argv[0]);
+  if(!file_exists(o.exe)) { std::cerr << "quad_remesh_batch: no program at " << o.exe << "\n"; return 2; }
+  mkdir(o.out.c_str(), 0755);
+
+  const std::string csv_path = o.out + "/results.csv";
+  const bool new_csv = !file_exists(csv_path);
+  std::ofstream csv(csv_path, std::ios::app);
+  std::ofstream jsonl(o.out + "/results.jsonl", std::ios::app);
+  if(new_csv)
+  {
+    csv << "mesh,status,exit_code,seconds,peak_kb,input_F,output_V,output_F";
+    for(const std::string& s : stage_names) csv << "," << s << "_s";
+    for(const std::string& k : quality_keys) csv << "," << k;
+    csv << ",error\n";
+  }
+
+  std::vector<Run> runs;
+  for(std::size_t i = 0; i < o.meshes.size(); ++i)
+  {
+    if(i % o.shards != o.shard) continue;
+    const std::string& mesh = o.meshes[i];
+    if(o.resume && file_exists(o.out + "/" + base_name(mesh) + ".json"))
+    {
+      std::cout << "skip " << mesh << " (already done)\n";
+      continue;
+    }
+    Run r = run_one(o, mesh);
+    const QR::Report* input = r.report.find("input");
+    const QR::Report* output = r.report.find("output");
+    csv << csv_escape(r.mesh) << "," << r.status << "," << r.exit_code << "," << r.seconds << "," << r.peak_kb
+        << "," << number_or_empty(input ? input->find("F") : nullptr)
+        << "," << number_or_empty(output ? output->find("V") : nullptr)
+        << "," << number_or_empty(output ? output->find("F") : nullptr);
+    for(const std::string& s : stage_names)
+    {
+      const QR::Report* st = stage_of(r.report, s);
+      csv << "," << number_or_empty(st ? st->find("seconds") : nullptr);
+    }
+    const QR::Report* q = quality_of(r.report);
+    for(const std::string& k : quality_keys) csv << "," << number_or_empty(q ? q->find(k) : nullptr);
+    const QR::Report* err = r.report.find("error");
+    csv << "," << csv_escape(err ? err->string() : std::string()) << "\n";
+    csv.flush();
+
+    QR::Report line = QR::Report::object();
+    line["mesh"] = r.mesh;
+    line["status"] = r.status;
+    line["exit_code"] = r.exit_code;
+    line["seconds"] = r.seconds;
+    line["peak_kb"] = r.peak_kb;
+    line["report"] = r.report;
+    line.write_json(jsonl, -1);
+    jsonl << "\n";
+    jsonl.flush();
+    std::cout << r.name << ": " << r.status << " in " << r.seconds << " s, peak " << r.peak_kb / 1024 << " MiB"
+              << (err && !err->string().empty() ? " (" + err->string() + ")" : std::string()) << "\n";
+    runs.push_back(std::move(r));
+  }
+
+  // Summary, like the paper's Thingi10K statistics.
+  QR::Report summary = QR::Report::object();
+  std::size_t ok = 0;
+  std::vector<double> times, sj, irregular;
+  for(const Run& r : runs)
+  {
+    if(r.status == "ok") ++ok;
+    times.push_back(r.seconds);
+    if(const QR::Report* q = quality_of(r.report))
+    {
+      if(const QR::Report* v = q->find("SJ_mean")) sj.push_back(v->number());
+      if(const QR::Report* v = q->find("I")) irregular.push_back(v->number());
+    }
+  }
+  summary["meshes"] = runs.size();
+  summary["succeeded"] = ok;
+  summary["success_rate"] = runs.empty() ? 0. : double(ok) / double(runs.size());
+  summary["seconds_median"] = percentile(times, 0.5);
+  summary["seconds_p90"] = percentile(times, 0.9);
+  summary["seconds_p99"] = percentile(times, 0.99);
+  summary["seconds_max"] = percentile(times, 1.0);
+  summary["SJ_mean_median"] = percentile(sj, 0.5);
+  summary["irregular_median"] = percentile(irregular, 0.5);
+  std::ofstream(o.out + "/summary.json") << summary.to_json() << "\n";
+  std::cout << "summary: " << summary.to_json(-1) << "\n";
+  return 0;
+}
