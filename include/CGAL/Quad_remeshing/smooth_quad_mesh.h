@@ -1,0 +1,420 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Feature-constrained tangential smoothing of a quad mesh lying on a triangle mesh.
+
+#ifndef CGAL_QUAD_REMESHING_SMOOTH_QUAD_MESH_H
+#define CGAL_QUAD_REMESHING_SMOOTH_QUAD_MESH_H
+
+#include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/internal/smoothing/quad_geometry.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <vector>
+
+/// damping factor of each smoothing step, in (0, 1] (`double`)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(smoothing_damping_t, smoothing_damping, smoothing_damping)
+
+namespace CGAL {
+namespace Quad_remeshing {
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  Figures of `smooth_quad_mesh()`.
+*/
+struct Quad_smoothing_statistics
+{
+  unsigned iterations = 0;            ///< smoothing iterations done
+  std::size_t free_vertices = 0;      ///< vertices that move on the surface
+  std::size_t feature_vertices = 0;   ///< vertices that slide along a feature line
+  std::size_t fixed_vertices = 0;     ///< vertices that never move (feature corners, constrained vertices)
+  std::size_t rejected_moves = 0;     ///< moves refused (even after backing off) because they would worsen a quad too much
+  double min_scaled_jacobian_before = 0.;  ///< over all quads, before smoothing
+  double min_scaled_jacobian_after = 0.;   ///< over all quads, after smoothing
+  double mean_scaled_jacobian_before = 0.; ///< over all quads, before smoothing
+  double mean_scaled_jacobian_after = 0.;  ///< over all quads, after smoothing
+  double seconds = 0.;                ///< time spent
+
+  /// the figures as a report record
+  Report report() const
+  {
+    Report r = Report::object();
+    r["iterations"] = iterations;
+    r["free_vertices"] = free_vertices;
+    r["feature_vertices"] = feature_vertices;
+    r["fixed_vertices"] = fixed_vertices;
+    r["rejected_moves"] = rejected_moves;
+    r["min_scaled_jacobian_before"] = min_scaled_jacobian_before;
+    r["min_scaled_jacobian_after"] = min_scaled_jacobian_after;
+    r["mean_scaled_jacobian_before"] = mean_scaled_jacobian_before;
+    r["mean_scaled_jacobian_after"] = mean_scaled_jacobian_after;
+    r["seconds"] = seconds;
+    return r;
+  }
+};
+
+namespace internal {
+
+// The feature lines of the triangle mesh as chains of segments between feature corners
+// (vertices where the number of incident feature edges is not 2, or where the line turns sharply).
+template <typename TriangleMesh, typename EdgeFeatureMap, typename VPM, typename K>
+struct Feature_lines
+{
+  typedef typename K::Point_3 Point_3;
+  typedef typename K::Segment_3 Segment_3;
+  std::vector<std::vector<Segment_3>> lines;
+  std::vector<Point_3> corners;
+
+  Feature_lines(const TriangleMesh& tm, EdgeFeatureMap efm, VPM vpm, double corner_angle_deg)
+  {
+    typedef boost::graph_traits<TriangleMesh> GT;
+    typedef typename GT::halfedge_descriptor halfedge_descriptor;
+    typedef typename GT::vertex_descriptor vertex_descriptor;
+    auto degree = get(CGAL::dynamic_vertex_property_t<int>(), tm);
+    for(vertex_descriptor v : vertices(tm)) put(degree, v, 0);
+    for(auto e : edges(tm))
+      if(get(efm, e))
+      {
+        put(degree, source(e, tm), get(degree, source(e, tm)) + 1);
+        put(degree, target(e, tm), get(degree, target(e, tm)) + 1);
+      }
+    const double cos_limit = std::cos(corner_angle_deg * CGAL_PI / 180.);
+    auto is_corner = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
+    for(vertex_descriptor v : vertices(tm))
+    {
+      bool corner = get(degree, v) != 0 && get(degree, v) != 2;
+      if(get(degree, v) == 2)
+      {
+        std::vector<typename K::Vector_3> dirs;
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(v, tm), tm))
+          if(get(efm, edge(h, tm))) dirs.push_back(typename K::Vector_3(get(vpm, v), get(vpm, source(h, tm))));
+        if(dirs.size() == 2)
+        {
+          const double l0 = std::sqrt(dirs[0].squared_length()), l1 = std::sqrt(dirs[1].squared_length());
+          // straight continuation means the two edges point in opposite directions
+          if(l0 > 0 && l1 > 0 && -(dirs[0] * dirs[1]) / (l0 * l1) < cos_limit) corner = true;
+        }
+      }
+      put(is_corner, v, corner);
+      if(corner) corners.push_back(get(vpm, v));
+    }
+    // walk the chains
+    auto visited = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+    for(auto e : edges(tm)) put(visited, e, false);
+    for(auto e0 : edges(tm))
+    {
+      if(!get(efm, e0) || get(visited, e0)) continue;
+      // go backwards to the start of the chain (a corner) or around a closed loop
+      halfedge_descriptor h = halfedge(e0, tm);
+      halfedge_descriptor start = h;
+      for(;;)
+      {
+        vertex_descriptor s = source(h, tm);
+        if(get(is_corner, s)) break;
+        halfedge_descriptor prev = h;
+        bool found = false;
+        for(halfedge_descriptor g : halfedges_around_target(s, tm))
+          if(get(efm, edge(g, tm)) && edge(g, tm) != edge(h, tm)) { prev = g; found = true; break; }
+        if(!found) break;
+        h = prev;
+        if(h == start || opposite(h, tm) == start) break;
+      }
+      std::vector<Segment_3> line;
+      halfedge_descriptor first = h;
+      for(;;)
+      {
+        if(get(visited, edge(h, tm))) break;
+        put(visited, edge(h, tm), true);
+        line.emplace_back(get(vpm, source(h, tm)), get(vpm, target(h, tm)));
+        vertex_descriptor t = target(h, tm);
+        if(get(is_corner, t)) break;
+        bool found = false;
+        for(halfedge_descriptor g : halfedges_around_source(t, tm))
+          if(get(efm, edge(g, tm)) && edge(g, tm) != edge(h, tm) && !get(visited, edge(g, tm))) { h = g; found = true; break; }
+        if(!found || h == first) break;
+      }
+      lines.push_back(std::move(line));
+    }
+  }
+
+  // the closest point of line `l` to `p`
+  Point_3 project(std::size_t l, const Point_3& p, double* sq_dist = nullptr) const
+  {
+    double best = std::numeric_limits<double>::max();
+    Point_3 best_p = p;
+    for(const Segment_3& s : lines[l])
+    {
+      const typename K::Vector_3 d = s.to_vector();
+      const double len2 = d.squared_length();
+      double t = len2 > 0 ? ((p - s.source()) * d) / len2 : 0.;
+      t = (std::max)(0., (std::min)(1., t));
+      const Point_3 q = s.source() + t * d;
+      const double dd = CGAL::squared_distance(p, q);
+      if(dd < best) { best = dd; best_p = q; }
+    }
+    if(sq_dist) *sq_dist = best;
+    return best_p;
+  }
+
+  // the line nearest to `p` (by brute force: done once per feature vertex)
+  std::size_t nearest_line(const Point_3& p, double& sq_dist) const
+  {
+    std::size_t best_l = 0;
+    sq_dist = std::numeric_limits<double>::max();
+    for(std::size_t l = 0; l < lines.size(); ++l)
+    {
+      double d;
+      project(l, p, &d);
+      if(d < sq_dist) { sq_dist = d; best_l = l; }
+    }
+    return best_l;
+  }
+};
+
+} // namespace internal
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+
+  smooths a quad mesh that lies on a triangle mesh, keeping it on the surface and its feature lines
+  on the feature lines of the triangle mesh.
+
+  Each iteration fits a square to every quad (the rotated, scaled square closest to the quad in its
+  mean plane) and moves every vertex, damped, towards the average of the fitted positions of its
+  corners ("tangent-space smoothing" by template fitting). Free vertices are then projected back onto
+  the triangle mesh (closest point, AABB tree); vertices on a feature line slide along it: they are
+  projected onto the feature line of the triangle mesh they started on; feature corners and
+  constrained vertices do not move. A move that would make an incident quad's scaled Jacobian
+  lower the smallest scaled Jacobian of the incident quads below both its previous value and 0.3, is
+  halved twice and then refused, so smoothing never inverts a quad (nor worsens an already bad one).
+
+  @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
+  @tparam TriangleMesh a model of `FaceListGraph` (triangles)
+  @tparam EdgeFeatureMap a model of `ReadablePropertyMap` with the triangle mesh's `edge_descriptor`
+          as key type and `bool` as value type
+  @tparam NamedParameters a sequence of named parameters
+
+  @param qmesh the quad mesh, changed in place
+  @param tmesh the triangle mesh that `qmesh` approximates
+  @param tmesh_edge_is_feature the feature edges of `tmesh`
+  @param np an optional sequence of named parameters among the ones listed below
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the number of smoothing iterations}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`30`}
+    \cgalParamNEnd
+    \cgalParamNBegin{smoothing_damping}
+      \cgalParamDescription{the fraction of the way to its target a vertex moves in one iteration}
+      \cgalParamType{double in (0, 1]}
+      \cgalParamDefault{`0.5`}
+    \cgalParamNEnd
+    \cgalParamNBegin{edge_is_constrained_map}
+      \cgalParamDescription{the edges of `qmesh` that lie on feature lines of `tmesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with `qmesh`'s `edge_descriptor` as key type and `bool` as value type}
+      \cgalParamDefault{the boundary edges of `qmesh`}
+      \cgalParamExtra{a vertex with two incident constrained edges slides along its feature line; with another number it does not move}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_is_constrained_map}
+      \cgalParamDescription{vertices of `qmesh` that must not move}
+      \cgalParamType{a model of `ReadablePropertyMap` with `qmesh`'s `vertex_descriptor` as key type and `bool` as value type}
+      \cgalParamDefault{no vertex (vertices at feature corners of `tmesh` are fixed anyway)}
+    \cgalParamNEnd
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{whether progress and timing are printed to `std::cerr`}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  @pre `tmesh` is a triangle mesh and `qmesh` lies on it.
+*/
+template <typename QuadMesh, typename TriangleMesh, typename EdgeFeatureMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
+                                           const TriangleMesh& tmesh,
+                                           EdgeFeatureMap tmesh_edge_is_feature,
+                                           const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type K;
+  typedef typename K::Point_3 Point_3;
+  typedef typename K::Vector_3 Vector_3;
+  typedef boost::graph_traits<QuadMesh> QGT;
+  typedef typename QGT::vertex_descriptor q_vertex;
+  typedef typename QGT::face_descriptor q_face;
+  typedef typename QGT::halfedge_descriptor q_halfedge;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Quad_smoothing_statistics stats;
+  const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 30u);
+  const double damping = choose_parameter(get_parameter(np, internal_np::smoothing_damping), 0.5);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  if(!(damping > 0. && damping <= 1.)) throw std::invalid_argument("smooth_quad_mesh: damping must be in (0, 1]");
+
+  auto qvpm = get(CGAL::vertex_point, qmesh);
+  auto tvpm = get(CGAL::vertex_point, tmesh);
+
+  // constrained (feature) edges of the quad mesh; default: its boundary
+  auto q_border = get(CGAL::dynamic_edge_property_t<bool>(), qmesh);
+  for(auto e : edges(qmesh)) put(q_border, e, is_border(e, qmesh));
+  auto qecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained), q_border);
+  typedef CGAL::Static_boolean_property_map<q_vertex, false> No_vertex_constraint;
+  auto qvcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained), No_vertex_constraint());
+
+  const internal::Feature_lines<TriangleMesh, EdgeFeatureMap, decltype(tvpm), K> lines(tmesh, tmesh_edge_is_feature,
+                                                                                       tvpm, 45.);
+  // a scale for "at the same place"
+  CGAL::Bbox_3 bb;
+  for(auto v : vertices(tmesh)) bb += get(tvpm, v).bbox();
+  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin())
+                                + CGAL::square(bb.zmax() - bb.zmin()));
+  const double same_sq = CGAL::square(1e-7 * diag);
+
+  // classify the quad vertices: 0 free, 1 on a feature line, 2 fixed
+  auto kind = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
+  auto line_of = get(CGAL::dynamic_vertex_property_t<std::size_t>(), qmesh);
+  for(q_vertex v : vertices(qmesh))
+  {
+    int constrained = 0;
+    for(q_halfedge h : halfedges_around_target(halfedge(v, qmesh), qmesh))
+      if(get(qecm, edge(h, qmesh))) ++constrained;
+    int k = constrained == 0 ? 0 : (constrained == 2 ? 1 : 2);
+    if(get(qvcm, v)) k = 2;
+    const Point_3 p = get(qvpm, v);
+    if(k == 1)
+    {
+      for(const Point_3& c : lines.corners)
+        if(CGAL::squared_distance(p, c) <= same_sq) { k = 2; break; }
+    }
+    if(k == 1)
+    {
+      if(lines.lines.empty()) k = 2; // no feature line to slide on
+      else
+      {
+        double d;
+        put(line_of, v, lines.nearest_line(p, d));
+      }
+    }
+    put(kind, v, k);
+    if(k == 0) ++stats.free_vertices;
+    else if(k == 1) ++stats.feature_vertices;
+    else ++stats.fixed_vertices;
+  }
+
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh> Primitive;
+  typedef CGAL::AABB_traits<K, Primitive> Traits;
+  CGAL::AABB_tree<Traits> tree(faces(tmesh).first, faces(tmesh).second, tmesh);
+  tree.accelerate_distance_queries();
+
+  auto quad_points = [&](q_face f, std::array<Point_3, 4>& pts) -> bool {
+    int i = 0;
+    for(q_halfedge h : halfedges_around_face(halfedge(f, qmesh), qmesh))
+    {
+      if(i == 4) return false;
+      pts[i++] = get(qvpm, target(h, qmesh));
+    }
+    return i == 4;
+  };
+  auto quad_sj = [&](q_face f) {
+    std::array<Point_3, 4> pts;
+    return quad_points(f, pts) ? internal::quad_scaled_jacobian<Vector_3>(pts) : 1.;
+  };
+  auto min_sj_around = [&](q_vertex v) {
+    double m = 1.;
+    for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
+      if(f != QGT::null_face()) m = (std::min)(m, quad_sj(f));
+    return m;
+  };
+  auto sj_figures = [&](double& mn, double& mean) {
+    mn = 1.;
+    mean = 0.;
+    std::size_t n = 0;
+    for(q_face f : faces(qmesh))
+    {
+      std::array<Point_3, 4> pts;
+      if(!quad_points(f, pts)) continue;
+      const double s = internal::quad_scaled_jacobian<Vector_3>(pts);
+      mn = (std::min)(mn, s);
+      mean += s;
+      ++n;
+    }
+    if(n) mean /= double(n);
+  };
+  sj_figures(stats.min_scaled_jacobian_before, stats.mean_scaled_jacobian_before);
+
+  auto target_sum = get(CGAL::dynamic_vertex_property_t<Vector_3>(), qmesh);
+  auto target_count = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
+  for(unsigned it = 0; it < iterations; ++it)
+  {
+    for(q_vertex v : vertices(qmesh)) { put(target_sum, v, CGAL::NULL_VECTOR); put(target_count, v, 0); }
+    for(q_face f : faces(qmesh))
+    {
+      std::array<Point_3, 4> pts;
+      if(!quad_points(f, pts)) continue;
+      const std::array<Point_3, 4> sq = internal::best_fit_square<Vector_3>(pts);
+      int i = 0;
+      for(q_halfedge h : halfedges_around_face(halfedge(f, qmesh), qmesh))
+      {
+        const q_vertex v = target(h, qmesh);
+        put(target_sum, v, get(target_sum, v) + (sq[i++] - CGAL::ORIGIN));
+        put(target_count, v, get(target_count, v) + 1);
+      }
+    }
+    for(q_vertex v : vertices(qmesh))
+    {
+      const int k = get(kind, v);
+      if(k == 2 || get(target_count, v) == 0) continue;
+      const Point_3 old_p = get(qvpm, v);
+      const Point_3 target_p = CGAL::ORIGIN + get(target_sum, v) / double(get(target_count, v));
+      const double old_min = min_sj_around(v);
+      bool accepted = false;
+      double step = damping;
+      for(int attempt = 0; attempt < 3 && !accepted; ++attempt, step *= 0.5)
+      {
+        Point_3 p = old_p + step * (target_p - old_p);
+        p = (k == 1) ? lines.project(get(line_of, v), p) : tree.closest_point(p);
+        put(qvpm, v, p);
+        const double new_min = min_sj_around(v);
+        if(new_min >= (std::min)(old_min, 0.3)) accepted = true;
+      }
+      if(!accepted)
+      {
+        put(qvpm, v, old_p);
+        ++stats.rejected_moves;
+      }
+    }
+    ++stats.iterations;
+  }
+  sj_figures(stats.min_scaled_jacobian_after, stats.mean_scaled_jacobian_after);
+  stats.seconds = timer.time();
+  if(verbose)
+    std::cerr << "[smooth] " << stats.iterations << " iterations, " << stats.free_vertices << " free, "
+              << stats.feature_vertices << " feature, " << stats.fixed_vertices << " fixed vertices; scaled Jacobian min "
+              << stats.min_scaled_jacobian_before << " -> " << stats.min_scaled_jacobian_after << ", mean "
+              << stats.mean_scaled_jacobian_before << " -> " << stats.mean_scaled_jacobian_after << " ("
+              << stats.seconds << " s)\n";
+  return stats;
+}
+
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_SMOOTH_QUAD_MESH_H

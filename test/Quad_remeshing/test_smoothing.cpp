@@ -1,0 +1,185 @@
+// Feature-constrained quad smoothing: stays on the surface and on the feature lines, never inverts.
+#include "test_support.h"
+
+#include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
+#include <CGAL/Quad_remeshing/IO.h>
+
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <map>
+#include <vector>
+
+namespace {
+
+namespace QR = CGAL::Quad_remeshing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using qr_test::Mesh;
+using qr_test::Point_3;
+typedef qr_test::Kernel::Vector_3 Vector_3;
+
+double min_sj(const Mesh& q)
+{
+  double m = 1.;
+  for(auto f : faces(q))
+  {
+    std::array<Point_3, 4> p;
+    int i = 0;
+    for(auto v : vertices_around_face(halfedge(f, q), q)) p[i++] = q.point(v);
+    m = std::min(m, QR::internal::quad_scaled_jacobian<Vector_3>(p));
+  }
+  return m;
+}
+
+// Splits every triangle into three quads (centroid + edge midpoints); the quad edges that halve a
+// feature edge are marked in `qfeature`.
+template <typename FeatureMap, typename QFeatureMap>
+void split_into_quads(const Mesh& t, FeatureMap tf, Mesh& q, QFeatureMap& qfeature)
+{
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> vmap;
+  std::map<Mesh::Edge_index, Mesh::Vertex_index> emap;
+  for(auto v : vertices(t)) vmap[v] = q.add_vertex(t.point(v));
+  for(auto e : edges(t))
+    emap[e] = q.add_vertex(CGAL::midpoint(t.point(source(e, t)), t.point(target(e, t))));
+  for(auto f : faces(t))
+  {
+    auto h = halfedge(f, t);
+    const Point_3 c = CGAL::centroid(t.point(source(h, t)), t.point(target(h, t)), t.point(target(next(h, t), t)));
+    auto vc = q.add_vertex(c);
+    for(int i = 0; i < 3; ++i, h = next(h, t))
+    {
+      // quad at target(h): midpoint(h), target(h), midpoint(next(h)), centroid
+      q.add_face(emap[edge(h, t)], vmap[target(h, t)], emap[edge(next(h, t), t)], vc);
+    }
+  }
+  qfeature = get(CGAL::dynamic_edge_property_t<bool>(), q);
+  for(auto e : edges(q)) put(qfeature, e, false);
+  for(auto e : edges(t))
+    if(get(tf, e))
+    {
+      auto m = emap[e];
+      for(auto end : {vmap[source(e, t)], vmap[target(e, t)]})
+      {
+        auto hq = halfedge(m, end, q);
+        BOOST_REQUIRE(hq.second);
+        put(qfeature, edge(hq.first, q), true);
+      }
+    }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(smoothing)
+
+BOOST_AUTO_TEST_CASE(square_fit_of_a_square_is_itself)
+{
+  std::array<Point_3, 4> p = {Point_3(0, 0, 0), Point_3(2, 0, 0), Point_3(2, 2, 0), Point_3(0, 2, 0)};
+  auto q = QR::internal::best_fit_square<Vector_3>(p);
+  for(int i = 0; i < 4; ++i) BOOST_TEST(CGAL::squared_distance(p[i], q[i]) < 1e-24);
+  BOOST_TEST(QR::internal::quad_scaled_jacobian<Vector_3>(p) == 1., boost::test_tools::tolerance(1e-12));
+  std::array<Point_3, 4> bowtie = {Point_3(0, 0, 0), Point_3(2, 0, 0), Point_3(0, 2, 0), Point_3(2, 2, 0)};
+  BOOST_TEST(QR::internal::quad_scaled_jacobian<Vector_3>(bowtie) <= 0.);
+}
+
+BOOST_AUTO_TEST_CASE(fandisk_split_quads_improve_and_stay_on_features)
+{
+  Mesh t;
+  QR::read_and_repair(qr_test::data_file("fandisk.off"), t);
+  auto tf = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  PMP::detect_sharp_edges(t, 35., tf);
+  std::size_t nfeat = 0;
+  for(auto e : edges(t)) nfeat += get(tf, e) ? 1 : 0;
+  BOOST_TEST_REQUIRE(nfeat > 100u);
+
+  Mesh q;
+  decltype(get(CGAL::dynamic_edge_property_t<bool>(), q)) qf;
+  split_into_quads(t, tf, q, qf);
+  const double before = min_sj(q);
+  BOOST_TEST_REQUIRE(before > 0.);
+
+  // corners of the feature network must not move: remember the feature-degree != 2 vertices
+  std::vector<std::pair<Mesh::Vertex_index, Point_3>> corners;
+  for(auto v : vertices(q))
+  {
+    int d = 0;
+    for(auto h : halfedges_around_target(halfedge(v, q), q)) d += get(qf, edge(h, q)) ? 1 : 0;
+    if(d != 0 && d != 2) corners.emplace_back(v, q.point(v));
+  }
+  BOOST_TEST_REQUIRE(!corners.empty());
+
+  const QR::Quad_smoothing_statistics s =
+    QR::smooth_quad_mesh(q, t, tf, CGAL::parameters::edge_is_constrained_map(qf).number_of_iterations(10));
+  BOOST_TEST(s.iterations == 10u);
+  BOOST_TEST(s.feature_vertices > 0u);
+  BOOST_TEST(s.min_scaled_jacobian_after > 0.);
+  BOOST_TEST(min_sj(q) > 0.);
+  BOOST_TEST(s.mean_scaled_jacobian_after > s.mean_scaled_jacobian_before + 0.02);
+  for(const auto& c : corners) BOOST_TEST(CGAL::squared_distance(q.point(c.first), c.second) == 0.);
+
+  // still on the surface: every quad vertex within 1e-6 of the diagonal of the triangle mesh
+  CGAL::Bbox_3 bb = PMP::bbox(t);
+  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin())
+                                + CGAL::square(bb.zmax() - bb.zmin()));
+  std::vector<Point_3> qpoints;
+  for(auto v : vertices(q)) qpoints.push_back(q.point(v));
+  const double d = PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(qpoints, t);
+  BOOST_TEST(d < 1e-6 * diag);
+
+  // feature quad edges still lie on feature edges: their midpoints are within 0.5% of the diagonal
+  // of the original feature polylines, and feature vertices exactly on them
+  std::vector<qr_test::Kernel::Segment_3> fsegs;
+  for(auto e : edges(t))
+    if(get(tf, e)) fsegs.emplace_back(t.point(source(e, t)), t.point(target(e, t)));
+  for(auto e : edges(q))
+    if(get(qf, e))
+    {
+      const Point_3 a = q.point(source(e, q));
+      double best = 1e300;
+      for(const auto& sg : fsegs) best = std::min(best, CGAL::squared_distance(a, sg));
+      BOOST_TEST(std::sqrt(best) < 1e-9 * diag);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(perturbed_grid_on_a_plane_is_untangled_towards_squares)
+{
+  // A flat 2 x 2 square as two triangles, and a 10 x 10 quad grid on it with interior noise.
+  Mesh t;
+  auto a = t.add_vertex(Point_3(0, 0, 0)), b = t.add_vertex(Point_3(1, 0, 0)), c = t.add_vertex(Point_3(1, 1, 0)),
+       d = t.add_vertex(Point_3(0, 1, 0));
+  t.add_face(a, b, c);
+  t.add_face(a, c, d);
+  auto tf = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  for(auto e : edges(t)) put(tf, e, is_border(e, t));
+
+  const int n = 10;
+  Mesh q;
+  std::vector<Mesh::Vertex_index> grid;
+  CGAL::Random rng(7);
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      double x = double(i) / n, y = double(j) / n;
+      if(i > 0 && i < n && j > 0 && j < n) { x += rng.get_double(-0.03, 0.03); y += rng.get_double(-0.03, 0.03); }
+      grid.push_back(q.add_vertex(Point_3(x, y, 0)));
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      q.add_face(grid[j * (n + 1) + i], grid[j * (n + 1) + i + 1], grid[(j + 1) * (n + 1) + i + 1],
+                 grid[(j + 1) * (n + 1) + i]);
+  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(q, t, tf);
+  BOOST_TEST(s.fixed_vertices == 4u); // the four corners of the square
+  BOOST_TEST(s.min_scaled_jacobian_after > s.min_scaled_jacobian_before);
+  BOOST_TEST(s.mean_scaled_jacobian_after > 0.99);
+  for(auto v : vertices(q))
+  {
+    BOOST_TEST(std::abs(q.point(v).z()) < 1e-12);
+    BOOST_TEST(q.point(v).x() >= -1e-12);
+    BOOST_TEST(q.point(v).x() <= 1 + 1e-12);
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
