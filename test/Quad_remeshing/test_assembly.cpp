@@ -1,0 +1,194 @@
+// Assembly of patch quadrangulations into one conforming quad mesh on the surface.
+#include "test_support.h"
+
+#include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace {
+
+namespace QR = CGAL::Quad_remeshing;
+using qr_test::Mesh;
+using qr_test::Point_3;
+typedef Mesh::Vertex_index V;
+
+// A regular a x b grid on the unit square as a patch quadrangulation (sides: bottom a, right b, top a, left b).
+struct Grid_pattern
+{
+  std::vector<std::array<double, 2>> positions;
+  std::vector<std::array<std::size_t, 4>> quads;
+  std::vector<std::size_t> boundary;
+
+  Grid_pattern(int a, int b)
+  {
+    auto id = [&](int i, int j) { return std::size_t(j * (a + 1) + i); };
+    for(int j = 0; j <= b; ++j)
+      for(int i = 0; i <= a; ++i) positions.push_back({{double(i) / a, double(j) / b}});
+    for(int j = 0; j < b; ++j)
+      for(int i = 0; i < a; ++i) quads.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}});
+    for(int i = 0; i < a; ++i) boundary.push_back(id(i, 0));
+    for(int j = 0; j < b; ++j) boundary.push_back(id(a, j));
+    for(int i = a; i > 0; --i) boundary.push_back(id(i, b));
+    for(int j = b; j > 0; --j) boundary.push_back(id(0, j));
+  }
+};
+
+// An axis-aligned box [0,2]x[0,1]x[0,1], each face an n x n grid of triangle pairs, and its layout:
+// the six faces as patches, the twelve box edges as arcs.
+struct Box
+{
+  Mesh mesh;
+  QR::Patch_layout_description<Mesh> layout;
+  std::map<std::array<int, 3>, V> vertex; // integer grid coordinates (scaled by n)
+  int n;
+
+  V at(int x, int y, int z)
+  {
+    auto it = vertex.find({{x, y, z}});
+    if(it != vertex.end()) return it->second;
+    V v = mesh.add_vertex(Point_3(2. * x / n, double(y) / n, double(z) / n));
+    vertex[{{x, y, z}}] = v;
+    return v;
+  }
+
+  explicit Box(int n_) : n(n_)
+  {
+    // each face: origin corner o, directions u and v (outward normal u x v)
+    struct Face_def { std::array<int, 3> o, u, v; };
+    const std::vector<Face_def> defs = {
+      {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}, // z = 0
+      {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, // z = 1
+      {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, // y = 0
+      {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, // y = 1
+      {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}}, // x = 0
+      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, // x = 1
+    };
+    std::map<std::pair<V, V>, std::size_t> arc_of; // sorted end points -> arc
+    for(const Face_def& d : defs)
+    {
+      auto P = [&](int i, int j) {
+        return at(n * d.o[0] + i * d.u[0] + j * d.v[0], n * d.o[1] + i * d.u[1] + j * d.v[1],
+                  n * d.o[2] + i * d.u[2] + j * d.v[2]);
+      };
+      QR::Patch_layout_description<Mesh>::Patch patch;
+      for(int j = 0; j < n; ++j)
+        for(int i = 0; i < n; ++i)
+        {
+          patch.faces.push_back(mesh.add_face(P(i, j), P(i + 1, j), P(i + 1, j + 1)));
+          patch.faces.push_back(mesh.add_face(P(i, j), P(i + 1, j + 1), P(i, j + 1)));
+        }
+      // sides: (0,0)->(n,0)->(n,n)->(0,n)->(0,0)
+      const std::array<std::array<int, 4>, 4> sides = {{{0, 0, 1, 0}, {n, 0, 0, 1}, {n, n, -1, 0}, {0, n, 0, -1}}};
+      for(const auto& s : sides)
+      {
+        std::vector<V> chain;
+        for(int k = 0; k <= n; ++k) chain.push_back(P(s[0] + k * s[2], s[1] + k * s[3]));
+        auto key = std::minmax(chain.front(), chain.back());
+        QR::Patch_layout_description<Mesh>::Side_arc sa;
+        auto it = arc_of.find({key.first, key.second});
+        if(it == arc_of.end())
+        {
+          QR::Patch_layout_description<Mesh>::Arc arc;
+          arc.vertices = chain;
+          arc.on_feature = true;
+          sa.arc = layout.arcs.size();
+          arc_of[{key.first, key.second}] = sa.arc;
+          layout.arcs.push_back(arc);
+          sa.reversed = false;
+        }
+        else
+        {
+          sa.arc = it->second;
+          sa.reversed = (layout.arcs[sa.arc].vertices.front() != chain.front());
+        }
+        patch.sides.push_back({sa});
+      }
+      layout.patches.push_back(patch);
+    }
+  }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(assembly)
+
+BOOST_AUTO_TEST_CASE(box_faces_as_grids)
+{
+  Box box(4);
+  BOOST_TEST_REQUIRE(box.mesh.is_valid());
+  BOOST_TEST_REQUIRE(CGAL::is_closed(box.mesh));
+  BOOST_TEST_REQUIRE(box.layout.arcs.size() == 12u);
+
+  // x edges (length 2) get 6 quad edges, the others 3
+  std::vector<int> counts;
+  for(const auto& arc : box.layout.arcs)
+  {
+    const Point_3 a = box.mesh.point(arc.vertices.front()), b = box.mesh.point(arc.vertices.back());
+    counts.push_back(std::abs(a.x() - b.x()) > 0.5 ? 6 : 3);
+  }
+  std::vector<Grid_pattern> patterns;
+  for(const auto& patch : box.layout.patches)
+  {
+    const int a = counts[patch.sides[0][0].arc], b = counts[patch.sides[1][0].arc];
+    patterns.emplace_back(a, b);
+  }
+  Mesh q;
+  auto qf = get(CGAL::dynamic_edge_property_t<bool>(), q);
+  const QR::Quad_assembly_statistics s = QR::assemble_quad_mesh(box.mesh, box.layout, counts, patterns, q, qf);
+
+  // 2 faces 6x3... : faces z=0,z=1,y=0,y=1 are 6x3 = 18 quads, x faces 3x3 = 9: 4*18 + 2*9 = 90
+  BOOST_TEST(s.faces == 90u);
+  BOOST_TEST(num_faces(q) == 90u);
+  BOOST_TEST(q.is_valid());
+  BOOST_TEST(CGAL::is_closed(q));
+  BOOST_TEST(int(num_vertices(q)) - int(num_edges(q)) + int(num_faces(q)) == 2);
+  BOOST_TEST(s.feature_edges == 4u * 6u + 8u * 3u);
+  std::size_t marked = 0;
+  for(auto e : edges(q)) marked += get(qf, e) ? 1 : 0;
+  BOOST_TEST(marked == s.feature_edges);
+
+  // every quad vertex lies on the box and quads are planar squares/rectangles of the right size
+  for(auto v : vertices(q))
+  {
+    const Point_3 p = q.point(v);
+    const bool on = std::abs(p.x()) < 1e-12 || std::abs(p.x() - 2) < 1e-12 || std::abs(p.y()) < 1e-12
+                    || std::abs(p.y() - 1) < 1e-12 || std::abs(p.z()) < 1e-12 || std::abs(p.z() - 1) < 1e-12;
+    BOOST_TEST(on);
+  }
+  for(auto e : edges(q))
+  {
+    const double l = std::sqrt(CGAL::squared_distance(q.point(source(e, q)), q.point(target(e, q))));
+    BOOST_TEST(l == 1. / 3., boost::test_tools::tolerance(1e-9));
+  }
+  // outward orientation is kept: the signed volume is positive
+  double volume = 0;
+  for(auto f : faces(q))
+  {
+    std::vector<Point_3> p;
+    for(auto v : vertices_around_face(halfedge(f, q), q)) p.push_back(q.point(v));
+    for(int k : {1, 2})
+      volume += CGAL::to_double(CGAL::determinant(p[0] - CGAL::ORIGIN, p[k] - CGAL::ORIGIN, p[k + 1] - CGAL::ORIGIN)) / 6.;
+  }
+  BOOST_TEST(volume == 2., boost::test_tools::tolerance(1e-9));
+}
+
+BOOST_AUTO_TEST_CASE(mismatched_counts_are_refused)
+{
+  Box box(2);
+  std::vector<int> counts(box.layout.arcs.size(), 2);
+  std::vector<Grid_pattern> patterns(box.layout.patches.size(), Grid_pattern(3, 2)); // 3 != 2
+  Mesh q;
+  auto qf = get(CGAL::dynamic_edge_property_t<bool>(), q);
+  BOOST_CHECK_THROW(QR::assemble_quad_mesh(box.mesh, box.layout, counts, patterns, q, qf), std::invalid_argument);
+  counts.pop_back();
+  BOOST_CHECK_THROW(QR::assemble_quad_mesh(box.mesh, box.layout, counts, patterns, q, qf), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
