@@ -2,7 +2,7 @@
 # Installs the Debian packages the package needs, if any is missing (needs root or sudo).
 set -euo pipefail
 packages=(cmake g++ make libcgal-dev libeigen3-dev libglpk-dev libboost-graph-dev libboost-test-dev
-          libgmp-dev libmpfr-dev doxygen)
+          libgmp-dev libmpfr-dev doxygen clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -142,6 +142,16 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
   BOOST_TEST(throws_bad_input(write_text("io_degenerate.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n"),
                               "degenerate"));
   BOOST_TEST(throws_bad_input(write_text("io_mesh.xyz", "0 0 0\n"), "unsupported"));
+  // found by fuzzing: a property before any element crashed CGAL 5.5's PLY reader
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz1.ply",
+                                         std::string("ply\nformat ascii 1.0\nel eevtmnertexj3\0\0\0y float x\n", 50)
+                                           + "property float y\nproperty float z\nelement face 1\n"
+                                             "property list uchar int vertex_indices\nend_header\n0 0 0\n"),
+                              "PLY"));
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz2.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),
+                              "before any element"));
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz3.ply", "ply\nformat ascii 1.0\nelement vertex 99999999999\n"
+                                                        "property float x\nend_header\n"), "exceeds"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -125,6 +126,68 @@ inline bool has_non_finite_token(const std::string& fname)
   return false;
 }
 
+// CGAL 5.5's PLY reader trusts the header (a `property` line before any `element` line crashes it,
+// found by fuzzing): check the header's grammar first. Returns an empty string if the header is fine,
+// else what is wrong.
+inline std::string check_ply_header(const std::string& fname)
+{
+  std::ifstream in(fname, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff file_size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  std::string line;
+  std::size_t line_no = 0, header_bytes = 0;
+  bool has_element = false;
+  auto words_of = [](const std::string& l) {
+    std::vector<std::string> w;
+    std::istringstream is(l);
+    std::string x;
+    while(is >> x) w.push_back(x);
+    return w;
+  };
+  static const std::vector<std::string> types = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double",
+                                                 "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32",
+                                                 "float64"};
+  auto is_type = [&](const std::string& t) { return std::find(types.begin(), types.end(), t) != types.end(); };
+  while(std::getline(in, line))
+  {
+    header_bytes += line.size() + 1;
+    if(header_bytes > (1u << 16)) return "the PLY header is too long";
+    if(!line.empty() && line.back() == '\r') line.pop_back();
+    const std::vector<std::string> w = words_of(line);
+    ++line_no;
+    if(line_no == 1)
+    {
+      if(w.size() != 1 || w[0] != "ply") return "not a PLY file (the first line must be 'ply')";
+      continue;
+    }
+    if(w.empty()) return "empty line in the PLY header";
+    if(w[0] == "format")
+    {
+      if(w.size() != 3 || (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
+        return "bad PLY format line";
+    }
+    else if(w[0] == "comment" || w[0] == "obj_info") {}
+    else if(w[0] == "element")
+    {
+      if(w.size() != 3 || w[2].find_first_not_of("0123456789") != std::string::npos || w[2].size() > 12)
+        return "bad PLY element line";
+      if(std::stoll(w[2]) > file_size) return "a PLY element count exceeds the file size";
+      has_element = true;
+    }
+    else if(w[0] == "property")
+    {
+      if(!has_element) return "a PLY property comes before any element";
+      const bool ok = (w.size() == 3 && is_type(w[1]))
+                      || (w.size() == 5 && w[1] == "list" && is_type(w[2]) && is_type(w[3]));
+      if(!ok) return "bad PLY property line";
+    }
+    else if(w[0] == "end_header") return std::string();
+    else return "unknown keyword '" + w[0].substr(0, 20) + "' in the PLY header";
+  }
+  return "the PLY header has no end_header";
+}
+
 // Removes the points no polygon uses and renumbers the polygons; returns the number removed.
 template <typename Point, typename Polygon>
 std::size_t remove_unused_points(std::vector<Point>& points, std::vector<Polygon>& polygons)
@@ -201,6 +264,12 @@ Repair_statistics read_and_repair(const std::string& fname,
     std::ifstream probe(fname, std::ios::binary);
     if(!probe) throw Bad_input("'" + fname + "': cannot open the file");
     if(probe.peek() == std::ifstream::traits_type::eof()) throw Bad_input("'" + fname + "': the file is empty");
+  }
+
+  if(ext == "ply")
+  {
+    const std::string problem = internal::check_ply_header(fname);
+    if(!problem.empty()) throw Bad_input("'" + fname + "': " + problem);
   }
 
   std::vector<Point> points;
