@@ -119,7 +119,11 @@ BOOST_AUTO_TEST_CASE(unit_cube_of_six_quads)
 
   // the soup version gives the same figures
   const QR::Quad_mesh_quality s = QR::polygon_soup_quality(pts, polys);
-  BOOST_TEST(s.report().to_json(-1).size() > 0u);
+  const QR::Report r = s.report();
+  BOOST_TEST(r.find("irregular_vertices")->number() == 8.);
+  BOOST_TEST(r.find("pure_quad")->boolean());
+  BOOST_TEST(r.find("interior_valence_histogram")->find("3")->number() == 8.);
+  BOOST_TEST(r.find("seconds") != nullptr);
   BOOST_TEST(s.irregular_vertices == q.irregular_vertices);
   BOOST_TEST(s.edges == q.edges);
 

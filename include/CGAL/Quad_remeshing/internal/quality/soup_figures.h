@@ -6,6 +6,8 @@
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_QUALITY_SOUP_FIGURES_H
 #define CGAL_QUAD_REMESHING_INTERNAL_QUALITY_SOUP_FIGURES_H
 
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
