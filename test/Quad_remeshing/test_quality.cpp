@@ -290,6 +290,9 @@ BOOST_AUTO_TEST_CASE(split_fandisk_matches_input)
   BOOST_TEST(ff.feature_coverage_tight == 1.);
   BOOST_TEST(ff.feature_max_distance < 1e-9);
   BOOST_TEST(ff.feature_length > 0.);
+  // the output's creases are the halves of the input's features, and nothing else
+  BOOST_TEST(ff.output_feature_length == ff.feature_length, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(ff.output_features_on_input_features == 1.);
   BOOST_TEST(ff.input_samples > 20000u);
   BOOST_TEST(ff.output_samples > 20000u);
 
@@ -352,6 +355,11 @@ BOOST_AUTO_TEST_CASE(translated_cube_fidelity)
   BOOST_TEST(f4.coverage_tolerance == 0.0015);
   BOOST_TEST(f4.feature_coverage < 0.34);
   BOOST_TEST(f4.feature_coverage > 0.33);
+  // and the output's 8 crease edges across x are off the input's features too
+  BOOST_TEST(ff.output_features_on_input_features == 1.);
+  BOOST_TEST(ff.output_feature_length == 12., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(f4.output_features_on_input_features < 0.34);
+  BOOST_TEST(f4.output_features_on_input_features > 0.33);
   BOOST_CHECK_THROW(QR::feature_fidelity(t, feature, q, QR::parameters::feature_coverage_tolerance(0.)),
                     std::invalid_argument);
 }

@@ -150,6 +150,8 @@ struct Feature_fidelity
   double feature_coverage_loose = 1.;    ///< the same within 1% of the diagonal
   double feature_max_distance = 0.;      ///< largest distance from a feature sample to the output edges
   double feature_mean_distance = 0.;     ///< length-weighted mean of those distances
+  double output_feature_length = 0.;     ///< total length of the output's own feature edges, found with the same rule as the input's (absolute units)
+  double output_features_on_input_features = 1.; ///< length-weighted fraction of the output's feature edges within the tolerance of an input feature edge (1 - the share of spurious creases)
   double seconds = 0.;                   ///< time spent
 
   /// the figures as a report record
@@ -171,6 +173,8 @@ struct Feature_fidelity
     r["feature_coverage_1%"] = feature_coverage_loose;
     r["feature_max_distance"] = feature_max_distance;
     r["feature_mean_distance"] = feature_mean_distance;
+    r["output_feature_length"] = output_feature_length;
+    r["output_features_on_input_features"] = output_features_on_input_features;
     r["seconds"] = seconds;
     return r;
   }
@@ -194,6 +198,14 @@ void mesh_to_soup(const PolygonMesh& pmesh, VPM vpm, std::vector<Point_3>& point
     polygons.emplace_back();
     for(vertex_descriptor v : vertices_around_face(halfedge(f, pmesh), pmesh)) polygons.back().push_back(index.at(v));
   }
+}
+
+inline void print_summary(const Quad_mesh_quality& q)
+{
+  std::cerr << "[quality] V=" << q.vertices << " F=" << q.faces << " I=" << q.irregular_vertices
+            << " AD=" << q.angle_deviation << " ED=" << q.edge_length_deviation << " SJ=" << q.mean_scaled_jacobian
+            << " minSJ=" << q.min_scaled_jacobian << " pure_quad=" << q.pure_quad << " valid=" << q.valid << ", "
+            << q.seconds << " s\n";
 }
 
 inline Quad_mesh_quality to_quality(const Soup_figures& s)
@@ -257,6 +269,43 @@ typename K::Vector_3 newell_normal(typename boost::graph_traits<PolygonMesh>::fa
   return typename K::Vector_3(n[0], n[1], n[2]);
 }
 
+// Calls `out(e, is_feature)` for every edge: boundary edges, and edges whose faces' unit Newell
+// normals make an angle above `feature_angle` (faces without area never make an edge sharp).
+template <typename PolygonMesh, typename NamedParameters, typename Output>
+void classify_evaluation_edges(const PolygonMesh& pmesh, const NamedParameters& np, const Output& out)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::const_type VPM;
+  typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type K;
+  typedef typename K::Vector_3 Vector_3;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, pmesh));
+  const double angle = choose_parameter(get_parameter(np, Quad_remeshing::internal_np::feature_angle), 35.);
+  if(!(angle >= 0. && angle <= 180.))
+    throw std::invalid_argument("detect_evaluation_feature_edges: feature_angle must be in [0, 180]");
+  const double cos_threshold = std::cos(angle * 3.14159265358979323846 / 180.);
+
+  std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, Vector_3> normals;
+  for(auto f : faces(pmesh))
+  {
+    Vector_3 n = newell_normal(f, pmesh, vpm, K());
+    const double l = std::sqrt(CGAL::to_double(n.squared_length()));
+    normals.emplace(f, l > 0. ? n / l : Vector_3(0., 0., 0.));
+  }
+  for(auto e : edges(pmesh))
+  {
+    bool feature = is_border(e, pmesh);
+    if(!feature)
+    {
+      const Vector_3& n0 = normals.at(face(halfedge(e, pmesh), pmesh));
+      const Vector_3& n1 = normals.at(face(opposite(halfedge(e, pmesh), pmesh), pmesh));
+      feature = n0.squared_length() > 0. && n1.squared_length() > 0. && CGAL::to_double(n0 * n1) < cos_threshold;
+    }
+    out(e, feature);
+  }
+}
+
 } // namespace quality
 } // namespace internal
 
@@ -285,6 +334,11 @@ typename K::Vector_3 newell_normal(typename boost::graph_traits<PolygonMesh>::fa
       \cgalParamDescription{an instance of a geometric traits class}
       \cgalParamType{a model of `Kernel`}
       \cgalParamDefault{the kernel of the point type}
+    \cgalParamNEnd
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{whether a summary and the timing are printed to `std::cerr`}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
@@ -317,6 +371,7 @@ Quad_mesh_quality polygon_soup_quality(const PointRange& points, const PolygonRa
   }
   Quad_mesh_quality q = internal::quality::to_quality(internal::quality::compute_soup_figures(pts, polys));
   q.seconds = timer.time();
+  if(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false)) internal::quality::print_summary(q);
   return q;
 }
 
@@ -339,6 +394,11 @@ Quad_mesh_quality polygon_soup_quality(const PointRange& points, const PolygonRa
       \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
       \cgalParamDefault{`boost::get(CGAL::vertex_point, pmesh)`}
     \cgalParamNEnd
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{whether a summary and the timing are printed to `std::cerr`}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
   \cgalNamedParamsEnd
 
   @pre every face of `pmesh` has at least one halfedge
@@ -360,6 +420,7 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pmesh,
   internal::quality::mesh_to_soup(pmesh, vpm, pts, polys);
   Quad_mesh_quality q = internal::quality::to_quality(internal::quality::compute_soup_figures(pts, polys));
   q.seconds = timer.time();
+  if(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false)) internal::quality::print_summary(q);
   return q;
 }
 
@@ -399,38 +460,11 @@ template <typename PolygonMesh, typename EdgeIsFeatureMap,
 std::size_t detect_evaluation_feature_edges(const PolygonMesh& pmesh, EdgeIsFeatureMap edge_is_feature,
                                             const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::const_type VPM;
-  typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type K;
-  typedef typename K::Vector_3 Vector_3;
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, pmesh));
-  const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
-  if(!(angle >= 0. && angle <= 180.))
-    throw std::invalid_argument("detect_evaluation_feature_edges: feature_angle must be in [0, 180]");
-  const double cos_threshold = std::cos(angle * 3.14159265358979323846 / 180.);
-
-  std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, Vector_3> normals;
-  for(auto f : faces(pmesh))
-  {
-    Vector_3 n = internal::quality::newell_normal(f, pmesh, vpm, K());
-    const double l = std::sqrt(CGAL::to_double(n.squared_length()));
-    normals.emplace(f, l > 0. ? n / l : Vector_3(0., 0., 0.));
-  }
   std::size_t n_features = 0;
-  for(auto e : edges(pmesh))
-  {
-    bool feature = is_border(e, pmesh);
-    if(!feature)
-    {
-      const Vector_3& n0 = normals.at(face(halfedge(e, pmesh), pmesh));
-      const Vector_3& n1 = normals.at(face(opposite(halfedge(e, pmesh), pmesh), pmesh));
-      feature = n0.squared_length() > 0. && n1.squared_length() > 0. && CGAL::to_double(n0 * n1) < cos_threshold;
-    }
+  internal::quality::classify_evaluation_edges(pmesh, np, [&](auto e, bool feature) {
     put(edge_is_feature, e, feature);
     if(feature) ++n_features;
-  }
+  });
   return n_features;
 }
 
@@ -440,7 +474,8 @@ std::size_t detect_evaluation_feature_edges(const PolygonMesh& pmesh, EdgeIsFeat
   estimated from the vertices and area-uniform random samples of both surfaces (quads are cut
   along their shorter diagonal), and the coverage of the given feature lines by the edges of
   `qmesh`: feature edges are sampled every 1/1000 of the bounding-box diagonal and each sample's
-  distance to the nearest edge of `qmesh` is measured. The samples are drawn with a fixed seed,
+  distance to the nearest edge of `qmesh` is measured. Conversely, the creases of `qmesh` (found by
+  the rule of `detect_evaluation_feature_edges()`) are measured against the feature edges. The samples are drawn with a fixed seed,
   so the result is deterministic and does not depend on the number of threads.
 
   @tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph`
@@ -480,6 +515,11 @@ std::size_t detect_evaluation_feature_edges(const PolygonMesh& pmesh, EdgeIsFeat
       \cgalParamDescription{distance, as a fraction of the input's bounding-box diagonal, under which a feature sample is covered}
       \cgalParamType{`double`}
       \cgalParamDefault{`0.005`}
+    \cgalParamNEnd
+    \cgalParamNBegin{feature_angle}
+      \cgalParamDescription{the angle of `detect_evaluation_feature_edges()` used to find the output's own creases, in degrees}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`35.`}
     \cgalParamNEnd
     \cgalParamNBegin{number_of_threads}
       \cgalParamDescription{threads for the distance queries}
@@ -523,6 +563,7 @@ Feature_fidelity feature_fidelity(const TriangleMesh& tmesh, EdgeIsFeatureMap ed
   const unsigned threads = choose_parameter(get_parameter(np1, internal_np::number_of_threads), 1u);
   const double tolerance = choose_parameter(get_parameter(np1, internal_np::feature_coverage_tolerance), 0.005);
   const bool verbose = choose_parameter(get_parameter(np1, CGAL::internal_np::verbose), false);
+  const double crease_angle = choose_parameter(get_parameter(np1, internal_np::feature_angle), 35.);
   if(!(tolerance > 0.)) throw std::invalid_argument("feature_fidelity: feature_coverage_tolerance must be positive");
 
   std::vector<Point_3> tpts, qpts;
@@ -616,6 +657,31 @@ Feature_fidelity feature_fidelity(const TriangleMesh& tmesh, EdgeIsFeatureMap ed
       }
       r.feature_max_distance = max / diag;
     }
+
+    // The output's own creases, found with the same rule, should lie on input features; the
+    // others are spurious creases (folds or features the input does not have).
+    typename Trees::Segments qfeatures;
+    internal::quality::classify_evaluation_edges(
+      qmesh, parameters::feature_angle(np2, crease_angle), [&](auto e, bool feature) {
+        if(feature) qfeatures.emplace_back(get(qvpm, source(e, qmesh)), get(qvpm, target(e, qmesh)));
+      });
+    std::vector<Point_3> qsamples;
+    std::vector<double> qweights;
+    internal::quality::sample_segments<K>(qfeatures, diag / 1000., qsamples, qweights);
+    for(const auto& s : qfeatures) r.output_feature_length += std::sqrt(CGAL::to_double(s.squared_length()));
+    double near = 0., total = 0.;
+    if(!qsamples.empty())
+    {
+      typename Trees::Segment_tree ftree(features.begin(), features.end());
+      if(!features.empty()) ftree.accelerate_distance_queries();
+      const std::vector<double> d = internal::quality::distances_to_tree(ftree, qsamples, threads);
+      for(std::size_t i = 0; i < qsamples.size(); ++i)
+      {
+        total += qweights[i];
+        if(d[i] < tolerance * diag) near += qweights[i];
+      }
+    }
+    r.output_features_on_input_features = total > 0. ? near / total : 1.;
   }
   r.seconds = timer.time();
   if(verbose)
