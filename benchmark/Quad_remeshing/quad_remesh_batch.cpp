@@ -37,8 +37,10 @@ namespace {
 
 const std::vector<std::string> stage_names = {"repair", "features", "remesh", "field",
                                               "layout", "quantize", "quadrangulate", "smooth"};
-const std::vector<std::string> quality_keys = {"I", "I_boundary", "AD", "ED", "SJ_mean", "SJ_min",
-                                               "SJ_nonpositive", "pure_quad", "manifold"};
+const std::vector<std::string> quality_keys = {
+  "irregular_vertices", "irregular_boundary_vertices", "angle_deviation", "edge_length_deviation",
+  "mean_scaled_jacobian", "min_scaled_jacobian", "non_positive_scaled_jacobian", "pure_quad", "valid",
+  "hausdorff_max", "feature_coverage"};
 
 struct Options
 {
@@ -313,8 +315,8 @@ int main(int argc, char** argv)
     times.push_back(r.seconds);
     if(const QR::Report* q = quality_of(r.report))
     {
-      if(const QR::Report* v = q->find("SJ_mean")) sj.push_back(v->number());
-      if(const QR::Report* v = q->find("I")) irregular.push_back(v->number());
+      if(const QR::Report* v = q->find("mean_scaled_jacobian")) sj.push_back(v->number());
+      if(const QR::Report* v = q->find("irregular_vertices")) irregular.push_back(v->number());
     }
   }
   summary["meshes"] = runs.size();

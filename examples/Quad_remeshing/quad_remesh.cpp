@@ -10,6 +10,7 @@
 
 #include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -147,6 +148,7 @@ struct Stage_not_available : std::runtime_error
 // Everything the stages hand to each other.
 struct Pipeline_state
 {
+  Triangle_mesh input;   // the repaired input, for the final quality figures
   Triangle_mesh tmesh;
   QR::Repair_statistics repair;
 };
@@ -236,6 +238,7 @@ private:
   QR::Report stage_repair()
   {
     state_.repair = QR::read_and_repair(opt_.input, state_.tmesh, CGAL::parameters::verbose(opt_.verbose));
+    state_.input = state_.tmesh;
     report_["input"]["V"] = state_.repair.input_vertices;
     report_["input"]["F"] = state_.repair.input_faces;
     dump_mesh("1_repair.off", state_.tmesh);
@@ -250,6 +253,28 @@ private:
     report_["output"]["stage"] = last_stage_;
     report_["output"]["V"] = num_vertices(state_.tmesh);
     report_["output"]["F"] = num_faces(state_.tmesh);
+    measure_output(state_.tmesh);
+  }
+
+  // Quality of the output and its fidelity to the (repaired) input, with the evaluation's own
+  // definition of feature lines (boundaries and creases above the feature angle).
+  template <typename Mesh>
+  void measure_output(const Mesh& out)
+  {
+    namespace QRP = QR::parameters;
+    const QR::Quad_mesh_quality q = QR::quad_mesh_quality(out);
+    QR::Report quality = q.report();
+    auto features = get(CGAL::dynamic_edge_property_t<bool>(), state_.input);
+    QR::detect_evaluation_feature_edges(state_.input, features, QRP::feature_angle((std::min)(opt_.feature_angle, 180.)));
+    const QR::Feature_fidelity f =
+      QR::feature_fidelity(state_.input, features, out,
+                           QRP::feature_angle((std::min)(opt_.feature_angle, 180.)).random_seed(opt_.seed)
+                             .number_of_points_on_faces(std::size_t(20000)));
+    const QR::Report fr = f.report();
+    for(std::size_t i = 0; i < fr.keys().size(); ++i)
+      if(fr.keys()[i] != "seconds") quality[fr.keys()[i]] = fr.elements()[i];
+    quality["seconds"] = q.seconds + f.seconds;
+    report_["output"]["quality"] = quality;
   }
 
   void dump_mesh(const std::string& name, const Triangle_mesh& m)
@@ -291,8 +316,18 @@ private:
     }
     if(const QR::Report* out = report_.find("output"))
       if(out->find("V"))
+      {
         os << "  output: " << out->find("V")->number() << " vertices, " << out->find("F")->number()
            << " faces (after stage '" << out->find("stage")->string() << "')\n";
+        if(const QR::Report* q = out->find("quality"))
+        {
+          auto num = [&](const char* k) { const QR::Report* v = q->find(k); return v ? v->number() : 0.; };
+          os << "  quality: irregular " << num("irregular_vertices") << ", angle deviation " << num("angle_deviation")
+             << " deg, scaled Jacobian mean " << num("mean_scaled_jacobian") << " min " << num("min_scaled_jacobian")
+             << ", Hausdorff " << num("hausdorff_max") << " of the diagonal, feature coverage " << num("feature_coverage")
+             << ", valid " << (q->find("valid") && q->find("valid")->boolean() ? "yes" : "no") << "\n";
+        }
+      }
     os << "  status: " << report_["status"].string();
     if(!report_["error"].string().empty()) os << " (" << report_["error"].string() << ")";
     os << "\n";
