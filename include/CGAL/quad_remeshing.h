@@ -9,5 +9,8 @@
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/IO.h>
+#include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/quad_mesh_quality.h>
+#include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 
 #endif // CGAL_QUAD_REMESHING_H
