@@ -362,6 +362,17 @@ BOOST_AUTO_TEST_CASE(translated_cube_fidelity)
   BOOST_TEST(f4.output_features_on_input_features > 0.33);
   BOOST_CHECK_THROW(QR::feature_fidelity(t, feature, q, QR::parameters::feature_coverage_tolerance(0.)),
                     std::invalid_argument);
+
+  // the soup version measures the same thing; a face flipped in the soup does not create creases
+  Polygons flipped = polys;
+  std::reverse(flipped[2].begin(), flipped[2].end());
+  const QR::Feature_fidelity s1 = QR::polygon_soup_feature_fidelity(
+    t, feature, moved, flipped, CGAL::parameters::number_of_points_on_faces(5000));
+  BOOST_TEST(s1.hausdorff_max == ff.hausdorff_max, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s1.feature_coverage_tight == ff.feature_coverage_tight, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s1.output_feature_length == 12., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s1.output_features_on_input_features == 1.);
+  BOOST_CHECK_THROW(QR::polygon_soup_feature_fidelity(t, feature, moved, Polygons{{0, 1, 8}}), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(triangle_mesh_is_not_quad)

@@ -468,6 +468,205 @@ std::size_t detect_evaluation_feature_edges(const PolygonMesh& pmesh, EdgeIsFeat
   return n_features;
 }
 
+namespace internal {
+namespace quality {
+
+struct Fidelity_settings
+{
+  std::size_t n_samples;
+  unsigned seed;
+  unsigned threads;
+  double tolerance;
+  double crease_angle;
+};
+
+// Creases of a soup by the rule of `detect_evaluation_feature_edges()`, plus its non-manifold
+// edges; the second normal is flipped when the two faces disagree in orientation.
+template <typename K>
+std::vector<typename K::Segment_3> soup_creases(const std::vector<typename K::Point_3>& pts,
+                                                const Index_polygons& polygons, const Soup_edges& soup_edges,
+                                                double angle)
+{
+  typedef typename K::Vector_3 Vector_3;
+  std::vector<Vector_3> normals;
+  normals.reserve(polygons.size());
+  for(const std::vector<std::size_t>& f : polygons)
+  {
+    double n[3] = {0., 0., 0.};
+    for(std::size_t i = 0; i < f.size(); ++i)
+    {
+      const auto& p = pts[f[i]];
+      const auto& q = pts[f[(i + 1) % f.size()]];
+      n[0] += CGAL::to_double((p.y() - q.y()) * (p.z() + q.z()));
+      n[1] += CGAL::to_double((p.z() - q.z()) * (p.x() + q.x()));
+      n[2] += CGAL::to_double((p.x() - q.x()) * (p.y() + q.y()));
+    }
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    normals.push_back(l > 0. ? Vector_3(n[0] / l, n[1] / l, n[2] / l) : Vector_3(0., 0., 0.));
+  }
+  const double cos_threshold = std::cos(angle * 3.14159265358979323846 / 180.);
+  std::vector<typename K::Segment_3> creases;
+  for(std::size_t e = 0; e < soup_edges.size(); ++e)
+  {
+    const std::vector<Edge_use>& u = soup_edges.uses[e];
+    bool crease = u.size() != 2;
+    if(!crease)
+    {
+      const Vector_3& n0 = normals[u[0].face];
+      const Vector_3 n1 = u[0].forward == u[1].forward ? -normals[u[1].face] : normals[u[1].face];
+      crease = n0.squared_length() > 0. && n1.squared_length() > 0. && CGAL::to_double(n0 * n1) < cos_threshold;
+    }
+    if(crease) creases.emplace_back(pts[soup_edges.ends[e].first], pts[soup_edges.ends[e].second]);
+  }
+  return creases;
+}
+
+// Hausdorff distance and feature coverage between an input soup with its feature edges and an
+// output soup; both public versions come here so that they measure exactly the same thing.
+template <typename K>
+Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, const Index_polygons& tpolys,
+                               const std::vector<typename K::Segment_3>& features,
+                               const std::vector<typename K::Point_3>& qpts, const Index_polygons& qpolys,
+                               const Fidelity_settings& settings)
+{
+  typedef typename K::Point_3 Point_3;
+  typedef Tree_types<K> Trees;
+  const typename Trees::Triangles ttris = triangulate_soup<K>(tpts, tpolys);
+  const typename Trees::Triangles qtris = triangulate_soup<K>(qpts, qpolys);
+  if(ttris.empty()) throw std::invalid_argument("feature_fidelity: the input mesh has no face with non-zero area");
+  if(qpolys.empty()) throw std::invalid_argument("feature_fidelity: the output mesh has no face");
+
+  Feature_fidelity r;
+  CGAL::Bbox_3 box;
+  for(const auto& f : tpolys)
+    for(std::size_t v : f) box += tpts[v].bbox();
+  const double diag = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                CGAL::square(box.zmax() - box.zmin()));
+  r.bbox_diagonal = diag;
+  r.coverage_tolerance = settings.tolerance;
+
+  // Hausdorff distance, both directions
+  {
+    typename Trees::Triangle_tree ttree(ttris.begin(), ttris.end());
+    ttree.accelerate_distance_queries();
+    One_sided_distance qt;
+    if(qtris.empty())
+    {
+      // a flat output has no area: only its vertices can be measured
+      qt = one_sided_distance<K>(qpts, qpolys, qtris, ttree, 0, settings.seed, settings.threads);
+    }
+    else
+      qt = one_sided_distance<K>(qpts, qpolys, qtris, ttree, settings.n_samples, settings.seed, settings.threads);
+    One_sided_distance tq;
+    if(!qtris.empty())
+    {
+      typename Trees::Triangle_tree qtree(qtris.begin(), qtris.end());
+      qtree.accelerate_distance_queries();
+      tq = one_sided_distance<K>(tpts, tpolys, ttris, qtree, settings.n_samples, settings.seed, settings.threads);
+    }
+    else
+      tq.max = std::numeric_limits<double>::infinity();
+    r.input_to_output_max = tq.max / diag;
+    r.output_to_input_max = qt.max / diag;
+    r.hausdorff_max = (std::max)(r.input_to_output_max, r.output_to_input_max);
+    const std::size_t n_area = tq.area_samples + qt.area_samples;
+    if(n_area > 0)
+    {
+      r.hausdorff_mean = (tq.sum + qt.sum) / double(n_area) / diag;
+      r.hausdorff_rms = std::sqrt((tq.sum_squares + qt.sum_squares) / double(n_area)) / diag;
+    }
+    r.input_samples = tq.area_samples + tq.vertex_samples;
+    r.output_samples = qt.area_samples + qt.vertex_samples;
+  }
+
+  // coverage of the feature lines by the output's edges
+  {
+    typename Trees::Segments qedges;
+    const Soup_edges qsoup_edges(qpts.size(), qpolys);
+    for(const auto& e : qsoup_edges.ends)
+    {
+      typename K::Segment_3 s(qpts[e.first], qpts[e.second]);
+      if(!s.is_degenerate()) qedges.push_back(s);
+    }
+    std::vector<Point_3> samples;
+    std::vector<double> weights;
+    sample_segments<K>(features, diag / 1000., samples, weights);
+    for(const auto& s : features) r.feature_length += std::sqrt(CGAL::to_double(s.squared_length()));
+    if(!samples.empty())
+    {
+      typename Trees::Segment_tree etree(qedges.begin(), qedges.end());
+      etree.accelerate_distance_queries();
+      const std::vector<double> d = distances_to_tree(etree, samples, settings.threads);
+      const double eps[3] = {0.001 * diag, settings.tolerance * diag, 0.01 * diag};
+      double covered[3] = {0., 0., 0.}, total = 0., mean = 0., max = 0.;
+      for(std::size_t i = 0; i < samples.size(); ++i)
+      {
+        max = (std::max)(max, d[i]);
+        total += weights[i];
+        mean += weights[i] * d[i];
+        for(int k = 0; k < 3; ++k)
+          if(d[i] < eps[k]) covered[k] += weights[i];
+      }
+      if(total > 0.)
+      {
+        r.feature_coverage_tight = covered[0] / total;
+        r.feature_coverage = covered[1] / total;
+        r.feature_coverage_loose = covered[2] / total;
+        r.feature_mean_distance = mean / total / diag;
+      }
+      r.feature_max_distance = max / diag;
+    }
+
+    // The output's own creases, found with the same rule, should lie on input features; the
+    // others are spurious creases (folds or features the input does not have).
+    const typename Trees::Segments qfeatures = soup_creases<K>(qpts, qpolys, qsoup_edges, settings.crease_angle);
+    std::vector<Point_3> qsamples;
+    std::vector<double> qweights;
+    sample_segments<K>(qfeatures, diag / 1000., qsamples, qweights);
+    for(const auto& s : qfeatures) r.output_feature_length += std::sqrt(CGAL::to_double(s.squared_length()));
+    double near = 0., total = 0.;
+    if(!qsamples.empty())
+    {
+      typename Trees::Segment_tree ftree(features.begin(), features.end());
+      if(!features.empty()) ftree.accelerate_distance_queries();
+      const std::vector<double> d = distances_to_tree(ftree, qsamples, settings.threads);
+      for(std::size_t i = 0; i < qsamples.size(); ++i)
+      {
+        total += qweights[i];
+        if(d[i] < settings.tolerance * diag) near += qweights[i];
+      }
+    }
+    r.output_features_on_input_features = total > 0. ? near / total : 1.;
+  }
+  return r;
+}
+
+template <typename NamedParameters>
+Fidelity_settings fidelity_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Fidelity_settings s;
+  s.n_samples = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_on_faces), std::size_t(100000));
+  s.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  s.threads = choose_parameter(get_parameter(np, Quad_remeshing::internal_np::number_of_threads), 1u);
+  s.tolerance = choose_parameter(get_parameter(np, Quad_remeshing::internal_np::feature_coverage_tolerance), 0.005);
+  s.crease_angle = choose_parameter(get_parameter(np, Quad_remeshing::internal_np::feature_angle), 35.);
+  if(!(s.tolerance > 0.)) throw std::invalid_argument("feature_fidelity: feature_coverage_tolerance must be positive");
+  if(!(s.crease_angle >= 0. && s.crease_angle <= 180.)) throw std::invalid_argument("feature_fidelity: feature_angle must be in [0, 180]");
+  return s;
+}
+
+inline void print_summary(const Feature_fidelity& r)
+{
+  std::cerr << "[quality] hausdorff max " << r.hausdorff_max << " mean " << r.hausdorff_mean
+            << " (fractions of the diagonal), feature coverage " << r.feature_coverage
+            << ", feature max distance " << r.feature_max_distance << ", " << r.seconds << " s\n";
+}
+
+} // namespace quality
+} // namespace internal
+
 /*!
   \ingroup PkgQuadRemeshingRef
   Measures how well a quad mesh reproduces a triangle mesh: the two-sided Hausdorff distance,
@@ -550,7 +749,6 @@ Feature_fidelity feature_fidelity(const TriangleMesh& tmesh, EdgeIsFeatureMap ed
   typedef typename GetVertexPointMap<PolygonMesh, NamedParameters2>::const_type QVPM;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters1>::type K;
   typedef typename K::Point_3 Point_3;
-  typedef internal::quality::Tree_types<K> Trees;
 
   CGAL::Real_timer timer;
   timer.start();
@@ -558,136 +756,86 @@ Feature_fidelity feature_fidelity(const TriangleMesh& tmesh, EdgeIsFeatureMap ed
                                      get_const_property_map(CGAL::vertex_point, tmesh));
   const QVPM qvpm = choose_parameter(get_parameter(np2, CGAL::internal_np::vertex_point),
                                      get_const_property_map(CGAL::vertex_point, qmesh));
-  const std::size_t n_samples = choose_parameter(get_parameter(np1, CGAL::internal_np::number_of_points_on_faces), std::size_t(100000));
-  const unsigned seed = choose_parameter(get_parameter(np1, CGAL::internal_np::random_seed), 0u);
-  const unsigned threads = choose_parameter(get_parameter(np1, internal_np::number_of_threads), 1u);
-  const double tolerance = choose_parameter(get_parameter(np1, internal_np::feature_coverage_tolerance), 0.005);
-  const bool verbose = choose_parameter(get_parameter(np1, CGAL::internal_np::verbose), false);
-  const double crease_angle = choose_parameter(get_parameter(np1, internal_np::feature_angle), 35.);
-  if(!(tolerance > 0.)) throw std::invalid_argument("feature_fidelity: feature_coverage_tolerance must be positive");
+  const internal::quality::Fidelity_settings settings = internal::quality::fidelity_settings(np1);
 
   std::vector<Point_3> tpts, qpts;
   internal::quality::Index_polygons tpolys, qpolys;
   internal::quality::mesh_to_soup(tmesh, tvpm, tpts, tpolys);
   internal::quality::mesh_to_soup(qmesh, qvpm, qpts, qpolys);
-  const typename Trees::Triangles ttris = internal::quality::triangulate_soup<K>(tpts, tpolys);
-  const typename Trees::Triangles qtris = internal::quality::triangulate_soup<K>(qpts, qpolys);
-  if(ttris.empty()) throw std::invalid_argument("feature_fidelity: the input mesh has no face with non-zero area");
-  if(qpolys.empty()) throw std::invalid_argument("feature_fidelity: the output mesh has no face");
-
-  Feature_fidelity r;
-  CGAL::Bbox_3 box;
-  for(const auto& f : tpolys)
-    for(std::size_t v : f) box += tpts[v].bbox();
-  const double diag = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                CGAL::square(box.zmax() - box.zmin()));
-  r.bbox_diagonal = diag;
-  r.coverage_tolerance = tolerance;
-
-  // Hausdorff distance, both directions
-  {
-    typename Trees::Triangle_tree ttree(ttris.begin(), ttris.end());
-    ttree.accelerate_distance_queries();
-    internal::quality::One_sided_distance qt;
-    if(qtris.empty())
-    {
-      // a flat output has no area: only its vertices can be measured
-      qt = internal::quality::one_sided_distance<K>(qpts, qpolys, qtris, ttree, 0, seed, threads);
-    }
-    else
-      qt = internal::quality::one_sided_distance<K>(qpts, qpolys, qtris, ttree, n_samples, seed, threads);
-    internal::quality::One_sided_distance tq;
-    if(!qtris.empty())
-    {
-      typename Trees::Triangle_tree qtree(qtris.begin(), qtris.end());
-      qtree.accelerate_distance_queries();
-      tq = internal::quality::one_sided_distance<K>(tpts, tpolys, ttris, qtree, n_samples, seed, threads);
-    }
-    else
-      tq.max = std::numeric_limits<double>::infinity();
-    r.input_to_output_max = tq.max / diag;
-    r.output_to_input_max = qt.max / diag;
-    r.hausdorff_max = (std::max)(r.input_to_output_max, r.output_to_input_max);
-    const std::size_t n_area = tq.area_samples + qt.area_samples;
-    if(n_area > 0)
-    {
-      r.hausdorff_mean = (tq.sum + qt.sum) / double(n_area) / diag;
-      r.hausdorff_rms = std::sqrt((tq.sum_squares + qt.sum_squares) / double(n_area)) / diag;
-    }
-    r.input_samples = tq.area_samples + tq.vertex_samples;
-    r.output_samples = qt.area_samples + qt.vertex_samples;
-  }
-
-  // coverage of the feature lines by the output's edges
-  {
-    typename Trees::Segments features, qedges;
-    for(auto e : edges(tmesh))
-      if(get(edge_is_feature, e))
-        features.emplace_back(get(tvpm, source(e, tmesh)), get(tvpm, target(e, tmesh)));
-    for(auto e : edges(qmesh))
-    {
-      typename K::Segment_3 s(get(qvpm, source(e, qmesh)), get(qvpm, target(e, qmesh)));
-      if(!s.is_degenerate()) qedges.push_back(s);
-    }
-    std::vector<Point_3> samples;
-    std::vector<double> weights;
-    internal::quality::sample_segments<K>(features, diag / 1000., samples, weights);
-    for(const auto& s : features) r.feature_length += std::sqrt(CGAL::to_double(s.squared_length()));
-    if(!samples.empty())
-    {
-      typename Trees::Segment_tree etree(qedges.begin(), qedges.end());
-      etree.accelerate_distance_queries();
-      const std::vector<double> d = internal::quality::distances_to_tree(etree, samples, threads);
-      const double eps[3] = {0.001 * diag, tolerance * diag, 0.01 * diag};
-      double covered[3] = {0., 0., 0.}, total = 0., mean = 0., max = 0.;
-      for(std::size_t i = 0; i < samples.size(); ++i)
-      {
-        max = (std::max)(max, d[i]);
-        total += weights[i];
-        mean += weights[i] * d[i];
-        for(int k = 0; k < 3; ++k)
-          if(d[i] < eps[k]) covered[k] += weights[i];
-      }
-      if(total > 0.)
-      {
-        r.feature_coverage_tight = covered[0] / total;
-        r.feature_coverage = covered[1] / total;
-        r.feature_coverage_loose = covered[2] / total;
-        r.feature_mean_distance = mean / total / diag;
-      }
-      r.feature_max_distance = max / diag;
-    }
-
-    // The output's own creases, found with the same rule, should lie on input features; the
-    // others are spurious creases (folds or features the input does not have).
-    typename Trees::Segments qfeatures;
-    internal::quality::classify_evaluation_edges(
-      qmesh, parameters::feature_angle(np2, crease_angle), [&](auto e, bool feature) {
-        if(feature) qfeatures.emplace_back(get(qvpm, source(e, qmesh)), get(qvpm, target(e, qmesh)));
-      });
-    std::vector<Point_3> qsamples;
-    std::vector<double> qweights;
-    internal::quality::sample_segments<K>(qfeatures, diag / 1000., qsamples, qweights);
-    for(const auto& s : qfeatures) r.output_feature_length += std::sqrt(CGAL::to_double(s.squared_length()));
-    double near = 0., total = 0.;
-    if(!qsamples.empty())
-    {
-      typename Trees::Segment_tree ftree(features.begin(), features.end());
-      if(!features.empty()) ftree.accelerate_distance_queries();
-      const std::vector<double> d = internal::quality::distances_to_tree(ftree, qsamples, threads);
-      for(std::size_t i = 0; i < qsamples.size(); ++i)
-      {
-        total += qweights[i];
-        if(d[i] < tolerance * diag) near += qweights[i];
-      }
-    }
-    r.output_features_on_input_features = total > 0. ? near / total : 1.;
-  }
+  std::vector<typename K::Segment_3> features;
+  for(auto e : edges(tmesh))
+    if(get(edge_is_feature, e)) features.emplace_back(get(tvpm, source(e, tmesh)), get(tvpm, target(e, tmesh)));
+  Feature_fidelity r = internal::quality::soup_fidelity<K>(tpts, tpolys, features, qpts, qpolys, settings);
   r.seconds = timer.time();
-  if(verbose)
-    std::cerr << "[quality] hausdorff max " << r.hausdorff_max << " mean " << r.hausdorff_mean
-              << " (fractions of the diagonal), feature coverage " << r.feature_coverage
-              << ", feature max distance " << r.feature_max_distance << ", " << r.seconds << " s\n";
+  if(choose_parameter(get_parameter(np1, CGAL::internal_np::verbose), false)) internal::quality::print_summary(r);
+  return r;
+}
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  Same as `feature_fidelity()`, with the output given as a polygon soup, so that an output file
+  that is not a valid polygon mesh (non-manifold, inconsistently oriented) can still be measured.
+  Non-manifold edges of the soup count as creases.
+
+  @tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph`
+  @tparam EdgeIsFeatureMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool` as value type
+  @tparam PointRange a model of `RandomAccessContainer` whose value type is a point
+  @tparam PolygonRange a model of `Range` whose value type is a range of indices into `points`
+  @tparam NamedParameters1 a sequence of named parameters
+  @tparam NamedParameters2 a sequence of named parameters
+
+  @param tmesh the input triangle mesh
+  @param edge_is_feature the feature edges of `tmesh`
+  @param points the output's vertex positions
+  @param polygons the output's faces, each a sequence of indices into `points`
+  @param np1 an optional sequence of named parameters: those of `feature_fidelity()`
+  @param np2 an optional sequence of named parameters for the soup: `point_map` (default `CGAL::Identity_property_map`)
+
+  @pre every index of `polygons` is smaller than `points.size()`, `tmesh` has a face with non-zero area and
+       `polygons` is not empty (checked: `std::invalid_argument`)
+*/
+template <typename TriangleMesh, typename EdgeIsFeatureMap, typename PointRange, typename PolygonRange,
+          typename NamedParameters1 = parameters::Default_named_parameters,
+          typename NamedParameters2 = parameters::Default_named_parameters>
+Feature_fidelity polygon_soup_feature_fidelity(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature,
+                                               const PointRange& points, const PolygonRange& polygons,
+                                               const NamedParameters1& np1 = parameters::default_values(),
+                                               const NamedParameters2& np2 = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters1>::const_type TVPM;
+  typedef typename GetPointMap<PointRange, NamedParameters2>::const_type Point_map;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters1>::type K;
+  typedef typename K::Point_3 Point_3;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  const TVPM tvpm = choose_parameter(get_parameter(np1, CGAL::internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, tmesh));
+  const Point_map pm = choose_parameter<Point_map>(get_parameter(np2, CGAL::internal_np::point_map));
+  const internal::quality::Fidelity_settings settings = internal::quality::fidelity_settings(np1);
+
+  std::vector<Point_3> tpts, qpts;
+  internal::quality::Index_polygons tpolys, qpolys;
+  internal::quality::mesh_to_soup(tmesh, tvpm, tpts, tpolys);
+  for(const auto& p : points) qpts.push_back(get(pm, p));
+  for(const auto& poly : polygons)
+  {
+    qpolys.emplace_back();
+    for(const auto& i : poly)
+    {
+      if(std::size_t(i) >= qpts.size())
+        throw std::invalid_argument("polygon_soup_feature_fidelity: a polygon refers to a vertex index out of range");
+      qpolys.back().push_back(std::size_t(i));
+    }
+  }
+  std::vector<typename K::Segment_3> features;
+  for(auto e : edges(tmesh))
+    if(get(edge_is_feature, e)) features.emplace_back(get(tvpm, source(e, tmesh)), get(tvpm, target(e, tmesh)));
+  Feature_fidelity r = internal::quality::soup_fidelity<K>(tpts, tpolys, features, qpts, qpolys, settings);
+  r.seconds = timer.time();
+  if(choose_parameter(get_parameter(np1, CGAL::internal_np::verbose), false)) internal::quality::print_summary(r);
   return r;
 }
 
