@@ -327,13 +327,8 @@ void classify_evaluation_edges(const PolygonMesh& pmesh, const NamedParameters& 
   \cgalNamedParamsBegin
     \cgalParamNBegin{point_map}
       \cgalParamDescription{a property map giving the position of an element of `points`}
-      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange` and whose value type is `geom_traits::Point_3`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange` and whose value type is a CGAL `Point_3`}
       \cgalParamDefault{`CGAL::Identity_property_map`}
-    \cgalParamNEnd
-    \cgalParamNBegin{geom_traits}
-      \cgalParamDescription{an instance of a geometric traits class}
-      \cgalParamType{a model of `Kernel`}
-      \cgalParamDefault{the kernel of the point type}
     \cgalParamNEnd
     \cgalParamNBegin{verbose}
       \cgalParamDescription{whether a summary and the timing are printed to `std::cerr`}
