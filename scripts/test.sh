@@ -1,12 +1,26 @@
 #!/usr/bin/env bash
-# Sets up a brand-new Debian machine if needed, builds in Release, runs every test and builds the manual.
-#   bash scripts/test.sh            (build directory: build/, override with QR_BUILD_DIR)
+# Sets up a brand-new Debian machine if needed, builds in Release, builds the manual, runs every test
+# (unit tests, CLI tests, install-and-consume, bounded fuzzing), then builds the test suite again with
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs it.
+#   bash scripts/test.sh            (build directories: build/ and build-asan/, or $QR_BUILD_DIR[-asan])
+#   QR_SKIP_SANITIZERS=1 bash scripts/test.sh   skips the sanitizer pass
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${QR_BUILD_DIR:-$root/build}
 jobs=$(nproc 2>/dev/null || echo 2)
 bash "$root/scripts/setup.sh"
+
+echo "== Release build and tests"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$jobs"
 cmake --build "$build" --target doc
 ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 900
+
+if [ "${QR_SKIP_SANITIZERS:-0}" != "1" ]; then
+  echo "== ASan + UBSan build and tests"
+  cmake -S "$root" -B "$build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQR_SANITIZE=ON \
+        -DQR_BUILD_DOC=OFF -DQR_BUILD_BENCHMARK=OFF -DQR_BUILD_FUZZ=OFF
+  cmake --build "$build-asan" -j "$jobs"
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --test-dir "$build-asan" --output-on-failure -j "$jobs" --timeout 1800 -E "install_and_consume"
+fi
