@@ -1,0 +1,302 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The HTML report's file: self-contained (three.js inlined, nothing fetched), holding the layers, the
+// histograms and the report JSON. The browser test (html/browser_test.mjs) opens the fandisk report
+// written here and checks that it renders.
+
+#include <CGAL/Quad_remeshing/html_report.h>
+
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.h"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace QR = CGAL::Quad_remeshing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using qr_test::Mesh;
+using qr_test::Point_3;
+
+namespace {
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string decode_base64(const std::string& s)
+{
+  static const std::string digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  unsigned v = 0;
+  int bits = 0;
+  for(char c : s)
+  {
+    if(c == '=') break;
+    const std::size_t d = digits.find(c);
+    BOOST_REQUIRE(d != std::string::npos);
+    v = (v << 6) | unsigned(d);
+    bits += 6;
+    if(bits >= 8)
+    {
+      bits -= 8;
+      out += char((v >> bits) & 255u);
+    }
+  }
+  return out;
+}
+
+// the text between `open` and the next "</script>"
+std::string script_content(const std::string& page, const std::string& open)
+{
+  const std::size_t b = page.find(open);
+  BOOST_REQUIRE_MESSAGE(b != std::string::npos, "missing " << open);
+  const std::size_t s = b + open.size();
+  const std::size_t e = page.find("</script>", s);
+  BOOST_REQUIRE(e != std::string::npos);
+  return page.substr(s, e - s);
+}
+
+std::size_t count(const std::string& text, const std::string& what)
+{
+  std::size_t n = 0;
+  for(std::size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+// Each triangle becomes 3 quads (centroid, edge midpoints shared between neighbours).
+void split_into_quads(const Mesh& t, Mesh& q)
+{
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> corner;
+  for(auto v : t.vertices()) corner[v] = q.add_vertex(t.point(v));
+  std::map<Mesh::Edge_index, Mesh::Vertex_index> middle;
+  for(auto e : t.edges())
+    middle[e] = q.add_vertex(CGAL::midpoint(t.point(t.source(t.halfedge(e))), t.point(t.target(t.halfedge(e)))));
+  for(auto f : t.faces())
+  {
+    const auto h0 = t.halfedge(f), h1 = t.next(h0), h2 = t.next(h1);
+    const auto c = q.add_vertex(CGAL::centroid(t.point(t.source(h0)), t.point(t.source(h1)), t.point(t.source(h2))));
+    for(auto h : {h0, h1, h2})
+    {
+      const auto m_in = middle[t.edge(t.prev(h))], m_out = middle[t.edge(h)];
+      BOOST_REQUIRE(q.add_face(corner[t.source(h)], m_out, c, m_in) != Mesh::null_face());
+    }
+  }
+}
+
+std::string threejs_dir()
+{
+  if(const char* env = std::getenv("QR_THREEJS_DIR")) return env;
+#ifdef QR_THREEJS_DIR
+  return QR_THREEJS_DIR;
+#else
+  return std::string();
+#endif
+}
+
+struct Fandisk_report
+{
+  Mesh input, quads;
+  QR::Html_report_scene scene;
+  std::size_t features = 0;
+
+  Fandisk_report()
+  {
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(qr_test::data_file("fandisk.off"), input));
+    auto is_feature = input.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+    PMP::detect_sharp_edges(input, 60., is_feature);
+    for(auto e : input.edges()) features += is_feature[e] ? 1 : 0;
+    split_into_quads(input, quads);
+
+    scene.title = "fandisk </script> report";
+    QR::Html_layer in = QR::polygon_mesh_layer("input", input);
+    in.visible = false;
+    scene.layers.push_back(in);
+    scene.layers.push_back(QR::feature_edges_layer("feature lines", input, is_feature));
+    scene.layers.push_back(QR::scaled_jacobian_layer("quad mesh (scaled Jacobian)", quads));
+    scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", quads));
+    scene.histograms = QR::quad_mesh_histograms(quads);
+    scene.report["input"]["vertices"] = input.number_of_vertices();
+    scene.report["input"]["seconds"] = 0.25;
+    scene.report["features"]["feature_edges"] = features;
+    scene.report["features"]["seconds"] = 0.5;
+    scene.report["quality"]["quads"] = quads.number_of_faces();
+  }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(html_report)
+
+BOOST_AUTO_TEST_CASE(scaled_jacobian_of_simple_quads)
+{
+  Mesh m;
+  const auto a = m.add_vertex(Point_3(0, 0, 0)), b = m.add_vertex(Point_3(1, 0, 0)), c = m.add_vertex(Point_3(1, 1, 0)),
+             d = m.add_vertex(Point_3(0, 1, 0)), e = m.add_vertex(Point_3(0.2, 0.2, 0)), g = m.add_vertex(Point_3(2, 0, 0)),
+             h = m.add_vertex(Point_3(2, 1, 0));
+  const auto square = m.add_face(a, b, c, d);
+  BOOST_CHECK_CLOSE(QR::quad_scaled_jacobian(square, m), 1., 1e-9);
+  // a rhombus-like parallelogram: every corner sine is sin(45 deg)
+  Mesh p;
+  const auto pf = p.add_face(p.add_vertex(Point_3(0, 0, 0)), p.add_vertex(Point_3(1, 0, 0)),
+                             p.add_vertex(Point_3(2, 1, 0)), p.add_vertex(Point_3(1, 1, 0)));
+  BOOST_CHECK_CLOSE(QR::quad_scaled_jacobian(pf, p), std::sqrt(0.5), 1e-9);
+  // concave quad (its reflex corner at e) has a negative scaled Jacobian
+  Mesh k;
+  const auto kf = k.add_face(k.add_vertex(Point_3(0, 0, 0)), k.add_vertex(Point_3(1, 0, 0)),
+                             k.add_vertex(Point_3(0.2, 0.2, 0)), k.add_vertex(Point_3(0, 1, 0)));
+  BOOST_CHECK_LT(QR::quad_scaled_jacobian(kf, k), 0.);
+  const auto tri = m.add_face(b, g, h);
+  BOOST_CHECK_THROW(QR::quad_scaled_jacobian(tri, m), std::invalid_argument);
+  (void)e;
+}
+
+BOOST_AUTO_TEST_CASE(layers_from_a_polygon_mesh)
+{
+  Fandisk_report f;
+  BOOST_CHECK_GT(f.features, 100u);
+  const QR::Html_layer& in = f.scene.layers[0];
+  BOOST_CHECK_EQUAL(in.polygons.points.size(), f.input.number_of_vertices());
+  BOOST_CHECK_EQUAL(in.polygons.faces.size(), f.input.number_of_faces());
+  BOOST_CHECK_EQUAL(f.scene.layers[1].segments.endpoints.size(), 2 * f.features);
+  const QR::Html_layer& q = f.scene.layers[2];
+  BOOST_CHECK_EQUAL(q.polygons.faces.size(), 3 * f.input.number_of_faces());
+  BOOST_CHECK_EQUAL(q.polygons.face_scalars.size(), q.polygons.faces.size());
+  BOOST_CHECK(q.polygons.wireframe);
+  for(double sj : q.polygons.face_scalars) BOOST_CHECK(sj > -1.000001 && sj < 1.000001);
+  // irregular vertices of a split closed triangle mesh: face centres (3) and input vertices (valence != 4)
+  std::size_t expected = f.input.number_of_faces();
+  for(auto v : f.input.vertices()) expected += f.input.degree(v) != 4 ? 1 : 0;
+  const QR::Html_layer& irr = f.scene.layers[3];
+  BOOST_CHECK_EQUAL(irr.points.points.size(), expected);
+  BOOST_CHECK_EQUAL(irr.points.colors.size(), expected);
+  BOOST_CHECK(!irr.legend.empty());
+  BOOST_CHECK_EQUAL(irr.legend.front().label.rfind("valence 3: " + std::to_string(f.input.number_of_faces()), 0), 0u);
+  BOOST_REQUIRE_EQUAL(f.scene.histograms.size(), 3u);
+  BOOST_CHECK_EQUAL(f.scene.histograms[0].values.size(), f.quads.number_of_faces());
+  BOOST_CHECK_EQUAL(f.scene.histograms[1].values.size(), 4 * f.quads.number_of_faces());
+  BOOST_CHECK_EQUAL(f.scene.histograms[2].values.size(), f.quads.number_of_edges());
+}
+
+BOOST_AUTO_TEST_CASE(fandisk_report_is_self_contained)
+{
+  Fandisk_report f;
+  const std::string path = qr_test::output_file("fandisk_report.html");
+  std::remove(path.c_str());
+  QR::write_html_report(path, f.scene, QR::parameters::threejs_directory(threejs_dir()));
+  const std::string page = slurp(path);
+  BOOST_REQUIRE(!page.empty());
+  BOOST_CHECK_EQUAL(page.rfind("<!DOCTYPE html>", 0), 0u);
+  BOOST_CHECK_EQUAL(page.substr(page.size() - 8), "</html>\n");
+  BOOST_CHECK_EQUAL(count(page, "<html"), 1u);
+  BOOST_CHECK_EQUAL(count(page, "<body>"), 1u);
+  BOOST_CHECK_EQUAL(count(page, "</body>"), 1u);
+  // the only scripts: guard, import map, scene data, report data, viewer module; none fetched
+  BOOST_CHECK_EQUAL(count(page, "<script"), 5u);
+  BOOST_CHECK_EQUAL(count(page, "</script>"), 5u);
+  BOOST_CHECK_EQUAL(count(page, " src="), 0u);
+  BOOST_CHECK_EQUAL(count(page, "http://"), 0u);
+  BOOST_CHECK_EQUAL(count(page, "https://"), 0u);
+  BOOST_CHECK_EQUAL(count(page, "<title>fandisk &lt;/script&gt; report</title>"), 1u);
+
+  // the import map inlines three.js (core, module) and OrbitControls as data: URLs
+  const Report imports = Report::parse(script_content(page, "<script type=\"importmap\">"));
+  const Report* map = imports.find("imports");
+  BOOST_REQUIRE(map);
+  std::string all_three;
+  for(const std::string& key : {"three", "three/addons/controls/OrbitControls.js"})
+  {
+    const Report* url = map->find(key);
+    BOOST_REQUIRE_MESSAGE(url, "import map entry " << key);
+    const std::string prefix = "data:text/javascript;base64,";
+    BOOST_REQUIRE_EQUAL(url->string().rfind(prefix, 0), 0u);
+    all_three += decode_base64(url->string().substr(prefix.size()));
+  }
+  if(const Report* core = map->find("three/core"))
+    all_three += decode_base64(core->string().substr(core->string().find(',') + 1));
+  BOOST_CHECK(all_three.find("class WebGLRenderer") != std::string::npos);
+  BOOST_CHECK(all_three.find("class OrbitControls") != std::string::npos);
+  BOOST_CHECK(all_three.find("class BufferGeometry") != std::string::npos);
+  BOOST_CHECK_EQUAL(count(all_three, "from './"), 0u);
+  // OrbitControls is inlined unchanged
+  const std::string controls = map->find("three/addons/controls/OrbitControls.js")->string();
+  BOOST_CHECK(decode_base64(controls.substr(controls.find(',') + 1)) ==
+              slurp(threejs_dir() + "/examples/jsm/controls/OrbitControls.js"));
+
+  // the scene data: the layers in order, with their sizes
+  const Report scene = Report::parse(script_content(page, "<script type=\"application/json\" id=\"qr-scene\">"));
+  BOOST_CHECK_EQUAL(scene.find("title")->string(), "fandisk </script> report");
+  const auto& layers = scene.find("layers")->elements();
+  BOOST_REQUIRE_EQUAL(layers.size(), 4u);
+  BOOST_CHECK_EQUAL(layers[0].find("name")->string(), "input");
+  BOOST_CHECK(!layers[0].find("visible")->boolean());
+  BOOST_CHECK(layers[2].find("visible")->boolean());
+  BOOST_CHECK_EQUAL(layers[0].find("polygons")->find("faces")->elements().size(), f.input.number_of_faces());
+  BOOST_CHECK_EQUAL(layers[0].find("polygons")->find("points")->elements().size(), 3 * f.input.number_of_vertices());
+  BOOST_CHECK_EQUAL(layers[1].find("segments")->find("endpoints")->elements().size(), 6 * f.features);
+  const Report& quads = *layers[2].find("polygons");
+  BOOST_CHECK_EQUAL(quads.find("faces")->elements().size(), f.quads.number_of_faces());
+  BOOST_CHECK_EQUAL(quads.find("faces")->elements().front().elements().size(), 4u);
+  BOOST_CHECK_EQUAL(quads.find("face_scalars")->elements().size(), f.quads.number_of_faces());
+  BOOST_CHECK_EQUAL(quads.find("color_map")->string(), "red_to_green");
+  BOOST_CHECK_EQUAL(quads.find("range")->elements()[0].number(), -1.);
+  BOOST_CHECK_EQUAL(layers[3].find("points")->find("points")->elements().size(),
+                    3 * f.scene.layers[3].points.points.size());
+
+  // histograms are binned: the counts add up to the finite values in range
+  const auto& hist = scene.find("histograms")->elements();
+  BOOST_REQUIRE_EQUAL(hist.size(), 3u);
+  double sum = 0.;
+  for(const Report& c : hist[0].find("counts")->elements()) sum += c.number();
+  BOOST_CHECK_EQUAL(sum, double(f.quads.number_of_faces()));
+  BOOST_CHECK_EQUAL(hist[0].find("counts")->elements().size(), 30u);
+  BOOST_CHECK_EQUAL(hist[1].find("counts")->elements().size(), 36u);
+  sum = 0.;
+  for(const Report& c : hist[2].find("counts")->elements()) sum += c.number();
+  BOOST_CHECK_EQUAL(sum, double(f.quads.number_of_edges()));
+
+  // the run's report, as given
+  const Report report = Report::parse(script_content(page, "<script type=\"application/json\" id=\"qr-report\">"));
+  BOOST_CHECK_EQUAL(report.to_json(), f.scene.report.to_json());
+}
+
+BOOST_AUTO_TEST_CASE(missing_threejs_writes_nothing)
+{
+  Fandisk_report f;
+  const std::string path = qr_test::output_file("html_report_missing_three.html");
+  std::remove(path.c_str());
+  BOOST_CHECK_THROW(QR::write_html_report(path, f.scene, QR::parameters::threejs_directory(std::string("/nonexistent/three"))),
+                    std::runtime_error);
+  BOOST_CHECK(!std::ifstream(path).good());
+}
+
+BOOST_AUTO_TEST_CASE(inconsistent_layers_are_refused)
+{
+  QR::Html_report_scene scene;
+  QR::Html_layer bad;
+  bad.name = "bad";
+  bad.polygons.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  bad.polygons.faces = {{0, 1, 3}};
+  scene.layers.push_back(bad);
+  std::ostringstream os;
+  BOOST_CHECK_THROW(QR::write_html_report(os, scene, QR::parameters::threejs_directory(threejs_dir())),
+                    std::invalid_argument);
+  scene.layers[0].polygons.faces = {{0, 1, 2}};
+  scene.layers[0].polygons.face_scalars = {1., 2.};
+  BOOST_CHECK_THROW(QR::write_html_report(os, scene, QR::parameters::threejs_directory(threejs_dir())),
+                    std::invalid_argument);
+  scene.layers[0].polygons.face_scalars = {1.};
+  QR::write_html_report(os, scene, QR::parameters::threejs_directory(threejs_dir()));
+  BOOST_CHECK(os.str().find("\"name\":\"bad\"") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
