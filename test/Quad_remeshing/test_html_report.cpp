@@ -24,6 +24,7 @@ namespace QR = CGAL::Quad_remeshing;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using qr_test::Mesh;
 using qr_test::Point_3;
+using CGAL::Quad_remeshing::Report;
 
 namespace {
 
@@ -124,6 +125,7 @@ struct Fandisk_report
     scene.layers.push_back(QR::feature_edges_layer("feature lines", input, is_feature));
     scene.layers.push_back(QR::scaled_jacobian_layer("quad mesh (scaled Jacobian)", quads));
     scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", quads));
+    scene.layers.back().points.size = 5.; // every input vertex and face centre is irregular here
     scene.histograms = QR::quad_mesh_histograms(quads);
     scene.report["input"]["vertices"] = input.number_of_vertices();
     scene.report["input"]["seconds"] = 0.25;
@@ -180,7 +182,14 @@ BOOST_AUTO_TEST_CASE(layers_from_a_polygon_mesh)
   BOOST_CHECK_EQUAL(irr.points.points.size(), expected);
   BOOST_CHECK_EQUAL(irr.points.colors.size(), expected);
   BOOST_CHECK(!irr.legend.empty());
-  BOOST_CHECK_EQUAL(irr.legend.front().label.rfind("valence 3: " + std::to_string(f.input.number_of_faces()), 0), 0u);
+  std::map<std::size_t, std::size_t> valences;
+  valences[3] = f.input.number_of_faces();
+  for(auto v : f.input.vertices())
+    if(f.input.degree(v) != 4) ++valences[f.input.degree(v)];
+  BOOST_REQUIRE_EQUAL(irr.legend.size(), valences.size());
+  std::size_t i = 0;
+  for(const auto& v : valences)
+    BOOST_CHECK_EQUAL(irr.legend[i++].label, "valence " + std::to_string(v.first) + ": " + std::to_string(v.second));
   BOOST_REQUIRE_EQUAL(f.scene.histograms.size(), 3u);
   BOOST_CHECK_EQUAL(f.scene.histograms[0].values.size(), f.quads.number_of_faces());
   BOOST_CHECK_EQUAL(f.scene.histograms[1].values.size(), 4 * f.quads.number_of_faces());
@@ -210,25 +219,25 @@ BOOST_AUTO_TEST_CASE(fandisk_report_is_self_contained)
 
   // the import map inlines three.js (core, module) and OrbitControls as data: URLs
   const Report imports = Report::parse(script_content(page, "<script type=\"importmap\">"));
-  const Report* map = imports.find("imports");
-  BOOST_REQUIRE(map);
+  const Report* imports_map = imports.find("imports");
+  BOOST_REQUIRE(imports_map);
   std::string all_three;
   for(const std::string& key : {"three", "three/addons/controls/OrbitControls.js"})
   {
-    const Report* url = map->find(key);
+    const Report* url = imports_map->find(key);
     BOOST_REQUIRE_MESSAGE(url, "import map entry " << key);
     const std::string prefix = "data:text/javascript;base64,";
     BOOST_REQUIRE_EQUAL(url->string().rfind(prefix, 0), 0u);
     all_three += decode_base64(url->string().substr(prefix.size()));
   }
-  if(const Report* core = map->find("three/core"))
+  if(const Report* core = imports_map->find("three/core"))
     all_three += decode_base64(core->string().substr(core->string().find(',') + 1));
   BOOST_CHECK(all_three.find("class WebGLRenderer") != std::string::npos);
   BOOST_CHECK(all_three.find("class OrbitControls") != std::string::npos);
   BOOST_CHECK(all_three.find("class BufferGeometry") != std::string::npos);
   BOOST_CHECK_EQUAL(count(all_three, "from './"), 0u);
   // OrbitControls is inlined unchanged
-  const std::string controls = map->find("three/addons/controls/OrbitControls.js")->string();
+  const std::string controls = imports_map->find("three/addons/controls/OrbitControls.js")->string();
   BOOST_CHECK(decode_base64(controls.substr(controls.find(',') + 1)) ==
               slurp(threejs_dir() + "/examples/jsm/controls/OrbitControls.js"));
 

@@ -270,7 +270,7 @@ function table(rows, header) {
   if (header) { const tr = t.insertRow(); for (const h of header) { const th = document.createElement('th'); th.textContent = h; tr.append(th); } }
   for (const r of rows) {
     const tr = t.insertRow();
-    r.forEach((v, i) => { const td = tr.insertCell(); if (v instanceof Node) td.append(v); else td.textContent = v; if (i > 0) td.className = 'num'; });
+    r.forEach((v, i) => { const td = tr.insertCell(); if (v instanceof Node) td.append(v); else { td.textContent = v; if (i > 0) td.className = 'num'; } });
   }
   return t;
 }
