@@ -6,6 +6,7 @@
 // written here and checks that it renders.
 
 #include <CGAL/Quad_remeshing/html_report.h>
+#include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -127,11 +128,19 @@ struct Fandisk_report
     scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", quads));
     scene.layers.back().points.size = 5.; // every input vertex and face centre is irregular here
     scene.histograms = QR::quad_mesh_histograms(quads);
-    scene.report["input"]["vertices"] = input.number_of_vertices();
-    scene.report["input"]["seconds"] = 0.25;
-    scene.report["features"]["feature_edges"] = features;
-    scene.report["features"]["seconds"] = 0.5;
-    scene.report["quality"]["quads"] = quads.number_of_faces();
+    // shaped like the command-line program's report
+    scene.report["status"] = "ok";
+    scene.report["input"]["file"] = "fandisk.off";
+    scene.report["stages"] = Report::array();
+    Report repair = Report::object(), detect = Report::object();
+    repair["name"] = "repair";
+    repair["seconds"] = 0.25;
+    detect["name"] = "features";
+    detect["feature_edges"] = features;
+    detect["seconds"] = 0.5;
+    scene.report["stages"].push_back(repair);
+    scene.report["stages"].push_back(detect);
+    scene.report["output"]["quality"] = QR::quad_mesh_quality(quads).report();
   }
 };
 

@@ -274,26 +274,37 @@ function table(rows, header) {
   }
   return t;
 }
-const fmt = (v) => typeof v === 'number' ? (Number.isInteger(v) ? String(v) : v.toPrecision(4)) : typeof v === 'boolean' ? String(v) : String(v);
-if (report && typeof report === 'object' && !Array.isArray(report)) {
-  const timed = Object.entries(report).filter(([, v]) => v && typeof v === 'object' && typeof v.seconds === 'number');
+const fmt = (v) => typeof v === 'number' && !Number.isInteger(v) ? v.toPrecision(4) : String(v);
+// Stage timings come from "stages": [{name, seconds, ...}] (the command-line program's report) and
+// from top-level objects holding "seconds"; every object is then shown as a table of its scalars.
+const is_object = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const scalar_rows = (o) => Object.entries(o).filter(([, v]) => v === null || typeof v !== 'object').map(([k, v]) => [k, fmt(v)]);
+function add_tables(title, o, depth) {
+  const rows = scalar_rows(o);
+  if (rows.length) {
+    const h = document.createElement(depth > 1 ? 'h4' : 'h3'); h.textContent = title || 'run'; report_div.append(h);
+    report_div.append(table(rows));
+  }
+  for (const [k, v] of Object.entries(o)) {
+    if (is_object(v)) add_tables(title ? title + ' / ' + k : k, v, depth + 1);
+    else if (Array.isArray(v)) v.forEach((x, i) => { if (is_object(x)) add_tables((title ? title + ' / ' : '') + k + ' / ' + (x.name ?? i), x, depth + 1); });
+  }
+}
+if (is_object(report)) {
+  const timed = [];
+  if (Array.isArray(report.stages))
+    for (const s of report.stages) if (is_object(s) && typeof s.seconds === 'number') timed.push([String(s.name ?? timed.length), s.seconds]);
+  for (const [k, v] of Object.entries(report)) if (is_object(v) && typeof v.seconds === 'number') timed.push([k, v.seconds]);
   if (timed.length) {
     const h = document.createElement('h3'); h.textContent = 'Timings'; report_div.append(h);
-    const longest = Math.max(1e-12, ...timed.map(([, v]) => v.seconds));
-    report_div.append(table(timed.map(([k, v]) => {
-      const bar = document.createElement('span'); bar.className = 'bar'; bar.style.width = (80 * v.seconds / longest) + 'px';
-      return [k, v.seconds.toFixed(3) + ' s', bar];
-    }), ['stage', 'time', '']));
+    const longest = Math.max(1e-12, ...timed.map(([, t]) => t));
+    const total = timed.reduce((a, [, t]) => a + t, 0);
+    report_div.append(table(timed.map(([k, t]) => {
+      const bar = document.createElement('span'); bar.className = 'bar'; bar.style.width = (80 * t / longest) + 'px';
+      return [k, t.toFixed(3) + ' s', bar];
+    }).concat([['total', total.toFixed(3) + ' s', '']]), ['stage', 'time', '']));
   }
-  const scalars = Object.entries(report).filter(([, v]) => v === null || typeof v !== 'object');
-  if (scalars.length) report_div.append(table(scalars.map(([k, v]) => [k, fmt(v)])));
-  for (const [k, v] of Object.entries(report)) {
-    if (!v || typeof v !== 'object' || Array.isArray(v)) continue;
-    const rows = Object.entries(v).filter(([, x]) => x === null || typeof x !== 'object');
-    if (!rows.length) continue;
-    const h = document.createElement('h3'); h.textContent = k; report_div.append(h);
-    report_div.append(table(rows.map(([a, x]) => [a, fmt(x)])));
-  }
+  add_tables('', report, 0);
 }
 document.getElementById('qr-report-json').textContent = JSON.stringify(report, null, 2);
 
