@@ -21,7 +21,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <fstream>
+#include <ostream>
 #include <limits>
 #include <map>
 #include <sstream>
