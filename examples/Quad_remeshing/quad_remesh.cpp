@@ -38,6 +38,12 @@ namespace {
 const std::vector<std::string> stage_names = {"repair", "features", "remesh", "field",
                                               "layout", "quantize", "quadrangulate", "smooth"};
 
+// The stages this build of the program can run (the others are reported as not available).
+bool stage_available(const std::string& name)
+{
+  return name == "repair";
+}
+
 const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
   "                   [--feature-angle DEG] [--features FILE] [--until STAGE] [--dump DIR]\n"
@@ -63,6 +69,7 @@ const char* usage_text =
   "  --time-limit S       time budget in seconds for the whole run (default: none)\n"
   "  --verbose            print progress of every stage\n"
   "  --quiet              print nothing but errors\n"
+  "  --list-stages        print every stage and whether this build can run it\n"
   "\n"
   "Exit codes: 0 done, 1 the pipeline failed, 2 bad input or arguments.\n";
 
@@ -102,6 +109,12 @@ Options parse_arguments(int argc, char** argv, bool& help)
       return argv[++i];
     };
     if(a == "--help" || a == "-h") { help = true; return o; }
+    else if(a == "--list-stages")
+    {
+      for(const std::string& n : stage_names)
+        std::cout << n << (stage_available(n) ? " available" : " not_available") << "\n";
+      std::exit(0);
+    }
     else if(a == "-o" || a == "--output") o.output = value();
     else if(a == "--edge-length") { o.edge_length = parse_number(a, value(), 1e-300); ++density_options; }
     else if(a == "--faces") { o.faces = long(parse_number(a, value(), 1.)); ++density_options; }
@@ -231,6 +244,8 @@ private:
 
   QR::Report dispatch(const std::string& name)
   {
+    if(!stage_available(name))
+      throw Stage_not_available("stage '" + name + "' is not available in this version of quad_remesh");
     if(name == "repair") return stage_repair();
     throw Stage_not_available("stage '" + name + "' is not available in this version of quad_remesh");
   }

@@ -33,3 +33,4 @@ qr_cli_test(until_repair_nasty 0
                  --report ${QR_CLI_OUT}/draco.json --dump ${QR_CLI_OUT}/draco_dump --quiet
             FILE ${QR_CLI_OUT}/draco.json
             FILE_MATCHES "\"status\": \"ok\".*\"name\": \"repair\".*\"removed_isolated_points\": 17.*\"output\"")
+qr_cli_test(list_stages 0 ARGS --list-stages OUTPUT_MATCHES "repair available")
