@@ -5,8 +5,10 @@
 // histograms and the report JSON. The browser test (html/browser_test.mjs) opens the fandisk report
 // written here and checks that it renders.
 
+#include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
+#include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -75,8 +77,10 @@ std::size_t count(const std::string& text, const std::string& what)
   return n;
 }
 
-// Each triangle becomes 3 quads (centroid, edge midpoints shared between neighbours).
-void split_into_quads(const Mesh& t, Mesh& q)
+// Each triangle becomes 3 quads (centroid, edge midpoints shared between neighbours); the two quad
+// edges halving a feature edge are features of the quad mesh.
+template <typename FeatureMap, typename QFeatureMap>
+void split_into_quads(const Mesh& t, FeatureMap t_feature, Mesh& q, QFeatureMap q_feature)
 {
   std::map<Mesh::Vertex_index, Mesh::Vertex_index> corner;
   for(auto v : t.vertices()) corner[v] = q.add_vertex(t.point(v));
@@ -93,6 +97,15 @@ void split_into_quads(const Mesh& t, Mesh& q)
       BOOST_REQUIRE(q.add_face(corner[t.source(h)], m_out, c, m_in) != Mesh::null_face());
     }
   }
+  for(auto e : q.edges()) put(q_feature, e, false);
+  for(auto e : t.edges())
+    if(get(t_feature, e))
+      for(auto end : {corner[t.source(t.halfedge(e))], corner[t.target(t.halfedge(e))]})
+      {
+        const auto h = CGAL::halfedge(middle[e], end, q);
+        BOOST_REQUIRE(h.second);
+        put(q_feature, q.edge(h.first), true);
+      }
 }
 
 std::string threejs_dir()
@@ -105,44 +118,59 @@ std::string threejs_dir()
 #endif
 }
 
+// fandisk, its feature lines, its triangles split into quads, and these quads smoothed: the layers and
+// figures the stages that exist can give (built once, shared by the test cases).
 struct Fandisk_report
 {
-  Mesh input, quads;
+  Mesh input, quads, smoothed;
   QR::Html_report_scene scene;
   std::size_t features = 0;
 
   Fandisk_report()
   {
-    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(qr_test::data_file("fandisk.off"), input));
+    const QR::Repair_statistics repair = QR::read_and_repair(qr_test::data_file("fandisk.off"), input);
     auto is_feature = input.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
     PMP::detect_sharp_edges(input, 60., is_feature);
     for(auto e : input.edges()) features += is_feature[e] ? 1 : 0;
-    split_into_quads(input, quads);
+    auto q_feature = quads.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+    split_into_quads(input, is_feature, quads, q_feature);
+    smoothed = quads;
+    const QR::Quad_smoothing_statistics smoothing = QR::smooth_quad_mesh(
+      smoothed, input, is_feature,
+      CGAL::parameters::edge_is_constrained_map(smoothed.property_map<Mesh::Edge_index, bool>("e:feature").first)
+        .number_of_iterations(10));
 
-    scene.title = "fandisk </script> report";
+    scene.title = "fandisk: feature lines, split and smoothed quads";
     QR::Html_layer in = QR::polygon_mesh_layer("input", input);
     in.visible = false;
     scene.layers.push_back(in);
     scene.layers.push_back(QR::feature_edges_layer("feature lines", input, is_feature));
-    scene.layers.push_back(QR::scaled_jacobian_layer("quad mesh (scaled Jacobian)", quads));
-    scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", quads));
+    QR::Html_layer split = QR::scaled_jacobian_layer("split quads (scaled Jacobian)", quads);
+    split.visible = false;
+    scene.layers.push_back(split);
+    scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", smoothed));
     scene.layers.back().points.size = 5.; // every input vertex and face centre is irregular here
-    scene.histograms = QR::quad_mesh_histograms(quads);
+    scene.layers.push_back(QR::scaled_jacobian_layer("smoothed quads (scaled Jacobian)", smoothed));
+    scene.histograms = QR::quad_mesh_histograms(smoothed);
     // shaped like the command-line program's report
     scene.report["status"] = "ok";
     scene.report["input"]["file"] = "fandisk.off";
     scene.report["stages"] = Report::array();
-    Report repair = Report::object(), detect = Report::object();
-    repair["name"] = "repair";
-    repair["seconds"] = 0.25;
-    detect["name"] = "features";
-    detect["feature_edges"] = features;
-    detect["seconds"] = 0.5;
-    scene.report["stages"].push_back(repair);
-    scene.report["stages"].push_back(detect);
-    scene.report["output"]["quality"] = QR::quad_mesh_quality(quads).report();
+    Report stage = repair.report();
+    stage["name"] = "repair";
+    scene.report["stages"].push_back(stage);
+    stage = smoothing.report();
+    stage["name"] = "smooth";
+    scene.report["stages"].push_back(stage);
+    scene.report["output"]["quality"] = QR::quad_mesh_quality(smoothed).report();
   }
 };
+
+const Fandisk_report& fandisk()
+{
+  static const Fandisk_report f;
+  return f;
+}
 
 } // namespace
 
@@ -172,7 +200,7 @@ BOOST_AUTO_TEST_CASE(scaled_jacobian_of_simple_quads)
 
 BOOST_AUTO_TEST_CASE(layers_from_a_polygon_mesh)
 {
-  Fandisk_report f;
+  const Fandisk_report& f = fandisk();
   BOOST_CHECK_GT(f.features, 100u);
   const QR::Html_layer& in = f.scene.layers[0];
   BOOST_CHECK_EQUAL(in.polygons.points.size(), f.input.number_of_vertices());
@@ -186,6 +214,11 @@ BOOST_AUTO_TEST_CASE(layers_from_a_polygon_mesh)
   // irregular vertices of a split closed triangle mesh: face centres (3) and input vertices (valence != 4)
   std::size_t expected = f.input.number_of_faces();
   for(auto v : f.input.vertices()) expected += f.input.degree(v) != 4 ? 1 : 0;
+  // the smoothed layer has the split connectivity and the smoothed positions
+  const QR::Html_layer& s = f.scene.layers[4];
+  BOOST_CHECK(s.polygons.faces == q.polygons.faces);
+  BOOST_CHECK(s.polygons.points != q.polygons.points);
+  BOOST_CHECK_EQUAL(s.polygons.points.size(), f.smoothed.number_of_vertices());
   const QR::Html_layer& irr = f.scene.layers[3];
   BOOST_CHECK_EQUAL(irr.points.points.size(), expected);
   BOOST_CHECK_EQUAL(irr.points.colors.size(), expected);
@@ -206,7 +239,7 @@ BOOST_AUTO_TEST_CASE(layers_from_a_polygon_mesh)
 
 BOOST_AUTO_TEST_CASE(fandisk_report_is_self_contained)
 {
-  Fandisk_report f;
+  const Fandisk_report& f = fandisk();
   const std::string path = qr_test::output_file("fandisk_report.html");
   std::remove(path.c_str());
   QR::write_html_report(path, f.scene, QR::parameters::threejs_directory(threejs_dir()));
@@ -223,7 +256,7 @@ BOOST_AUTO_TEST_CASE(fandisk_report_is_self_contained)
   BOOST_CHECK_EQUAL(count(page, " src="), 0u);
   BOOST_CHECK_EQUAL(count(page, "http://"), 0u);
   BOOST_CHECK_EQUAL(count(page, "https://"), 0u);
-  BOOST_CHECK_EQUAL(count(page, "<title>fandisk &lt;/script&gt; report</title>"), 1u);
+  BOOST_CHECK_EQUAL(count(page, "<title>fandisk: feature lines, split and smoothed quads</title>"), 1u);
 
   // the import map inlines three.js (core, module) and OrbitControls as data: URLs
   const Report imports = Report::parse(script_content(page, "<script type=\"importmap\">"));
@@ -251,16 +284,17 @@ BOOST_AUTO_TEST_CASE(fandisk_report_is_self_contained)
 
   // the scene data: the layers in order, with their sizes
   const Report scene = Report::parse(script_content(page, "<script type=\"application/json\" id=\"qr-scene\">"));
-  BOOST_CHECK_EQUAL(scene.find("title")->string(), "fandisk </script> report");
+  BOOST_CHECK_EQUAL(scene.find("title")->string(), f.scene.title);
   const auto& layers = scene.find("layers")->elements();
-  BOOST_REQUIRE_EQUAL(layers.size(), 4u);
+  BOOST_REQUIRE_EQUAL(layers.size(), 5u);
   BOOST_CHECK_EQUAL(layers[0].find("name")->string(), "input");
   BOOST_CHECK(!layers[0].find("visible")->boolean());
-  BOOST_CHECK(layers[2].find("visible")->boolean());
+  BOOST_CHECK(!layers[2].find("visible")->boolean());
+  BOOST_CHECK(layers[4].find("visible")->boolean());
   BOOST_CHECK_EQUAL(layers[0].find("polygons")->find("faces")->elements().size(), f.input.number_of_faces());
   BOOST_CHECK_EQUAL(layers[0].find("polygons")->find("points")->elements().size(), 3 * f.input.number_of_vertices());
   BOOST_CHECK_EQUAL(layers[1].find("segments")->find("endpoints")->elements().size(), 6 * f.features);
-  const Report& quads = *layers[2].find("polygons");
+  const Report& quads = *layers[4].find("polygons");
   BOOST_CHECK_EQUAL(quads.find("faces")->elements().size(), f.quads.number_of_faces());
   BOOST_CHECK_EQUAL(quads.find("faces")->elements().front().elements().size(), 4u);
   BOOST_CHECK_EQUAL(quads.find("face_scalars")->elements().size(), f.quads.number_of_faces());
@@ -288,7 +322,7 @@ BOOST_AUTO_TEST_CASE(fandisk_report_is_self_contained)
 
 BOOST_AUTO_TEST_CASE(missing_threejs_writes_nothing)
 {
-  Fandisk_report f;
+  const Fandisk_report& f = fandisk();
   const std::string path = qr_test::output_file("html_report_missing_three.html");
   std::remove(path.c_str());
   BOOST_CHECK_THROW(QR::write_html_report(path, f.scene, QR::parameters::threejs_directory(std::string("/nonexistent/three"))),
@@ -312,8 +346,15 @@ BOOST_AUTO_TEST_CASE(inconsistent_layers_are_refused)
   BOOST_CHECK_THROW(QR::write_html_report(os, scene, QR::parameters::threejs_directory(threejs_dir())),
                     std::invalid_argument);
   scene.layers[0].polygons.face_scalars = {1.};
+  // text that would close a <script> element is escaped in the data and in the title
+  scene.layers[0].name = "a </script><script>alert(1)</script> b";
+  scene.title = "<b>";
   QR::write_html_report(os, scene, QR::parameters::threejs_directory(threejs_dir()));
-  BOOST_CHECK(os.str().find("\"name\":\"bad\"") != std::string::npos);
+  const std::string page = os.str();
+  BOOST_CHECK_EQUAL(count(page, "</script>"), 5u);
+  BOOST_CHECK_EQUAL(count(page, "<title>&lt;b&gt;</title>"), 1u);
+  const Report data = Report::parse(script_content(page, "<script type=\"application/json\" id=\"qr-scene\">"));
+  BOOST_CHECK_EQUAL(data.find("layers")->elements()[0].find("name")->string(), scene.layers[0].name);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
