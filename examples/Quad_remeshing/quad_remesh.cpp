@@ -10,6 +10,7 @@
 
 #include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 
 #include <CGAL/Real_timer.h>
@@ -48,7 +49,7 @@ const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
   "                   [--feature-angle DEG] [--features FILE] [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
-  "                   [--verbose | --quiet] [--help]\n"
+  "                   [--html FILE.html] [--verbose | --quiet] [--help]\n"
   "\n"
   "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
   "lines (sharp creases and boundaries) as chains of edges.\n"
@@ -64,6 +65,7 @@ const char* usage_text =
   "                       repair, features, remesh, field, layout, quantize, quadrangulate, smooth\n"
   "  --dump DIR           write every finished stage's result into DIR\n"
   "  --report FILE.json   write the figures of every stage as JSON\n"
+  "  --html FILE.html     write a self-contained report with a 3D viewer of every stage\n"
   "  --seed N             random seed (default 0); the same input and seed give the same output\n"
   "  --threads N          worker threads (default 1)\n"
   "  --time-limit S       time budget in seconds for the whole run (default: none)\n"
@@ -80,7 +82,7 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string input, output, features_file, until = "smooth", dump_dir, report_file;
+  std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
   double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0.;
   long faces = 0;
   unsigned seed = 0, threads = 1;
@@ -129,6 +131,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     }
     else if(a == "--dump") o.dump_dir = value();
     else if(a == "--report") o.report_file = value();
+    else if(a == "--html") o.html_file = value();
     else if(a == "--seed") o.seed = unsigned(parse_number(a, value(), 0.));
     else if(a == "--threads") o.threads = unsigned(parse_number(a, value(), 1.));
     else if(a == "--time-limit") o.time_limit = parse_number(a, value(), 0.);
@@ -199,6 +202,7 @@ public:
       exit_code = 1;
     }
     write_report();
+    write_html();
     if(!opt_.quiet) print_summary();
     return exit_code;
   }
@@ -318,6 +322,31 @@ private:
     out << "\n";
   }
 
+  // The HTML report: one viewer layer per finished stage that has something to show.
+  void write_html()
+  {
+    if(opt_.html_file.empty()) return;
+    try {
+      QR::Html_report_scene scene;
+      scene.title = "quad_remesh: " + opt_.input;
+      if(num_faces(state_.input) > 0)
+        scene.layers.push_back(QR::polygon_mesh_layer("input (repaired)", state_.input));
+      for(QR::Html_layer& l : extra_layers_) scene.layers.push_back(l);
+      if(report_["status"].string() == "ok" && num_faces(state_.tmesh) > 0 && last_stage_ == "smooth")
+      {
+        scene.layers.push_back(QR::scaled_jacobian_layer("quad mesh (scaled Jacobian)", state_.tmesh));
+        scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", state_.tmesh));
+        scene.histograms = QR::quad_mesh_histograms(state_.tmesh);
+      }
+      else if(report_["status"].string() == "ok" && last_stage_ != "repair" && num_faces(state_.tmesh) > 0)
+        scene.layers.push_back(QR::polygon_mesh_layer("output of stage '" + last_stage_ + "'", state_.tmesh));
+      scene.report = report_;
+      QR::write_html_report(opt_.html_file, scene);
+    } catch(const std::exception& e) {
+      std::cerr << "quad_remesh: cannot write the HTML report: " << e.what() << "\n";
+    }
+  }
+
   void print_summary()
   {
     std::ostream& os = std::cout;
@@ -350,6 +379,7 @@ private:
 
   Options opt_;
   QR::Report report_;
+  std::vector<QR::Html_layer> extra_layers_; // layers the stages add for the HTML report
   Pipeline_state state_;
   std::string current_stage_, last_stage_;
 };
