@@ -16,6 +16,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/property_map.h>
 
 #include <array>
@@ -29,7 +30,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 /// directory of the three.js npm package (holding `build/three.module.js`) read by `write_html_report()` (`std::string`)
@@ -138,7 +138,11 @@ struct Html_report_scene
 /// without a normal or with a zero-length side.
 /// @pre `f` has degree 4.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 double quad_scaled_jacobian(typename boost::graph_traits<PolygonMesh>::face_descriptor f, const PolygonMesh& pmesh,
@@ -161,7 +165,11 @@ double quad_scaled_jacobian(typename boost::graph_traits<PolygonMesh>::face_desc
 /// \ingroup PkgQuadRemeshingRef
 /// A layer holding the faces of `pmesh` (any degree) in the order of `faces(pmesh)`, in one colour.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Html_layer polygon_mesh_layer(const std::string& name, const PolygonMesh& pmesh,
@@ -172,16 +180,16 @@ Html_layer polygon_mesh_layer(const std::string& name, const PolygonMesh& pmesh,
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   Html_layer layer;
   layer.name = name;
-  std::unordered_map<vertex_descriptor, std::size_t> index;
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), pmesh);
   for(vertex_descriptor v : vertices(pmesh))
   {
-    index.emplace(v, layer.polygons.points.size());
+    put(index, v, layer.polygons.points.size());
     layer.polygons.points.push_back(internal::html::to_array(get(vpm, v)));
   }
   for(auto f : faces(pmesh))
   {
     std::vector<std::size_t> face;
-    for(vertex_descriptor v : vertices_around_face(halfedge(f, pmesh), pmesh)) face.push_back(index.at(v));
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, pmesh), pmesh)) face.push_back(get(index, v));
     layer.polygons.faces.push_back(std::move(face));
   }
   return layer;
@@ -191,7 +199,11 @@ Html_layer polygon_mesh_layer(const std::string& name, const PolygonMesh& pmesh,
 /// A layer holding the faces of `pmesh` coloured by the scalar `get(face_scalars, f)` through `color_map`.
 /// @tparam FaceScalarMap a readable property map from faces to a number type convertible to `double`
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename FaceScalarMap, typename NamedParameters = parameters::Default_named_parameters>
 Html_layer scalar_polygon_mesh_layer(const std::string& name, const PolygonMesh& pmesh, FaceScalarMap face_scalars,
@@ -209,7 +221,11 @@ Html_layer scalar_polygon_mesh_layer(const std::string& name, const PolygonMesh&
 /// A layer holding the faces of `pmesh` with its wireframe, each quad coloured by its scaled Jacobian
 /// (`quad_scaled_jacobian()`) on the fixed range [-1, 1] from red to green; other faces are grey.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Html_layer scaled_jacobian_layer(const std::string& name, const PolygonMesh& pmesh,
@@ -231,7 +247,11 @@ Html_layer scaled_jacobian_layer(const std::string& name, const PolygonMesh& pme
 /// A layer of segments: the edges `e` of `pmesh` with `get(edge_is_feature, e)` true, in `color`.
 /// @tparam EdgeIsFeatureMap a readable property map from edges to `bool`
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename EdgeIsFeatureMap, typename NamedParameters = parameters::Default_named_parameters>
 Html_layer feature_edges_layer(const std::string& name, const PolygonMesh& pmesh, EdgeIsFeatureMap edge_is_feature,
@@ -273,7 +293,11 @@ inline CGAL::IO::Color valence_color(std::size_t valence)
 /// valence is not 4, coloured by valence (`valence_color()`), with a legend giving their counts.
 /// Boundary vertices are not marked: their ideal valence depends on the boundary angle.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Html_layer irregular_vertices_layer(const std::string& name, const PolygonMesh& pmesh,
@@ -303,7 +327,11 @@ Html_layer irregular_vertices_layer(const std::string& name, const PolygonMesh& 
 /// corner angles in degrees (reflex corners count as 360 minus the angle), and its edge lengths.
 /// Faces that are not quads count for the edge lengths only.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `pmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, pmesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Html_histogram> quad_mesh_histograms(const PolygonMesh& pmesh,
