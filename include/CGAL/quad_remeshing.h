@@ -10,6 +10,7 @@
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 
