@@ -34,3 +34,6 @@ qr_cli_test(until_repair_nasty 0
             FILE ${QR_CLI_OUT}/draco.json
             FILE_MATCHES "\"status\": \"ok\".*\"name\": \"repair\".*\"removed_isolated_points\": 17.*\"output\"")
 qr_cli_test(list_stages 0 ARGS --list-stages OUTPUT_MATCHES "repair available")
+qr_cli_test(html_report 0
+            ARGS ${QR_MESHES}/xyz_cube_20mm.off --until repair -o ${QR_CLI_OUT}/cube.off --html ${QR_CLI_OUT}/cube.html --quiet
+            FILE ${QR_CLI_OUT}/cube.html FILE_MATCHES "importmap.*input \\(repaired\\)")
