@@ -1,0 +1,765 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The patch layout of paper section 5: paths on a triangle mesh, the patches they cut it into, the
+// classification of the patch boundary vertices, validity and quality conditions, and field-aligned tracing.
+
+#ifndef CGAL_QUAD_REMESHING_PATCH_LAYOUT_H
+#define CGAL_QUAD_REMESHING_PATCH_LAYOUT_H
+
+#include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/internal/layout/direction_graph.h>
+#include <CGAL/Quad_remeshing/internal/layout/field_directions.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+/// weight of the advance along the field in the tracing cost, relative to the drift (`double`)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(tracing_length_weight_t, tracing_length_weight, tracing_length_weight)
+
+namespace CGAL {
+namespace Quad_remeshing {
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  Figures of a patch layout (see `Patch_layout::statistics()`).
+*/
+struct Patch_layout_statistics
+{
+  std::size_t patches = 0;         ///< number of patches
+  std::size_t valid_patches = 0;   ///< patches meeting the validity conditions
+  std::size_t quality_patches = 0; ///< valid patches also meeting the quality conditions
+  std::map<std::size_t, std::size_t> patches_by_valence; ///< number of patches per number of corners
+  std::size_t paths = 0;           ///< number of paths (feature paths included)
+  std::size_t t_junctions = 0;     ///< vertices where a path ends on another one
+  double seconds = 0.;             ///< time of the last rebuild
+
+  /// the figures as a report record
+  Report report() const
+  {
+    Report r = Report::object();
+    r["patches"] = patches;
+    r["valid_patches"] = valid_patches;
+    r["quality_patches"] = quality_patches;
+    Report v = Report::object();
+    for(const auto& p : patches_by_valence) v[std::to_string(p.first)] = p.second;
+    r["patches_by_valence"] = v;
+    r["paths"] = paths;
+    r["t_junctions"] = t_junctions;
+    r["seconds"] = seconds;
+    return r;
+  }
+};
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  A patch layout over a triangle mesh (paper section 5): a set of paths, chains of mesh edges each
+  following a direction of a cross field, and the patches they cut the mesh into.
+
+  For every patch the layout gives its faces, its boundary loops as halfedges of its faces (so the patch
+  lies on the left of each halfedge), the turn at every boundary vertex, its corners, its sides, and the
+  arcs of each side. An arc is a maximal chain of path edges with no corner of any patch and no junction of
+  paths inside it; it has a length measured along the field (sum of |edge . field direction|) and the
+  patches on both of its sides, so that the two patches sharing it see the same arc id.
+
+  Adding or removing a path marks the layout dirty; the patches are rebuilt on the next query by a cheap
+  rebuild (one flood fill and one walk of the boundaries, linear in the mesh size), not incrementally.
+  The direction graph G used for tracing is rebuilt the same way when paths have changed.
+
+  Turns are named as in the paper, whose boundaries run with the patch on their right: a right turn is
+  a convex corner, a left turn a concave one, a U-turn a dangling path end or a spike. They are found by
+  carrying the field direction of the incoming boundary edge across the faces of the fan to the outgoing
+  edge (the matchings), which fixes the turn modulo a full turn, and choosing among those turns the one
+  closest to the turn measured by the angle of the fan.
+
+  \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
+  \tparam GeomTraits a kernel; the default is the kernel of the mesh's points
+*/
+template <typename TriangleMesh,
+          typename GeomTraits = typename Kernel_traits<
+              typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel>
+class Patch_layout
+{
+public:
+  typedef GeomTraits Geom_traits;
+  typedef typename GeomTraits::FT FT;
+  typedef typename GeomTraits::Point_3 Point_3;
+  typedef typename GeomTraits::Vector_3 Vector_3;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  /// turn of a patch boundary at a vertex (paper Figure 6)
+  enum Turn { STRAIGHT = 0, RIGHT_TURN, LEFT_TURN, U_TURN };
+
+  /// the first condition a patch fails, in the order they are checked
+  enum Condition {
+    SATISFIED = 0,
+    NOT_A_DISK,        ///< more than one boundary loop or a handle
+    NOT_CONVEX,        ///< a left turn or a U-turn on the boundary
+    BAD_VALENCE,       ///< fewer than 3 or more than 6 corners
+    SIDE_LENGTHS,      ///< side lengths violate Equation 1 by more than the shortest side
+    SINGULARITIES      ///< singularities inside do not match the number of sides
+  };
+
+  /// a path: its vertices and, for each of its edges, the unit field direction it follows
+  struct Path
+  {
+    std::vector<vertex_descriptor> vertices;
+    std::vector<Vector_3> directions; ///< `directions[i]` for the edge `vertices[i]`-`vertices[i+1]`
+    bool is_feature = false;
+  };
+
+  /// a node of the direction graph: direction `direction` (0..3) of the frame at `vertex`
+  struct Node
+  {
+    vertex_descriptor vertex;
+    int direction;
+  };
+
+  /// a patch of the layout
+  struct Patch
+  {
+    std::vector<face_descriptor> faces;
+    std::vector<std::vector<halfedge_descriptor>> loops; ///< boundary loops, patch on the left
+    std::vector<std::vector<Turn>> turns; ///< `turns[l][i]`: turn at the target of `loops[l][i]`
+    std::vector<vertex_descriptor> corners; ///< vertices of non-straight turns, in loop order
+    std::vector<std::vector<std::size_t>> sides; ///< arc ids of each side, from one corner to the next
+    std::vector<double> side_lengths;
+    std::vector<vertex_descriptor> singularities; ///< singular vertices inside the patch
+    int euler_characteristic = 0;
+  };
+
+  /// an arc: a maximal chain of path edges between corners and junctions
+  struct Arc
+  {
+    std::vector<halfedge_descriptor> halfedges;
+    double length = 0.;                     ///< sum of |edge . field direction|
+    std::array<std::ptrdiff_t, 2> patches{{-1, -1}}; ///< patch on the left of `halfedges`, then on the right (-1: none)
+  };
+
+  /*!
+    builds a layout with no path (one patch per connected component; call `add_feature_paths()` next).
+
+    \tparam FaceFieldMap a readable property map, key `face_descriptor`, value `Vector_3`: one direction of
+            the cross of every face (projected into the face plane here)
+    \tparam VertexSingularityMap a readable property map, key `vertex_descriptor`, value `int`: the
+            singularity index in quarter turns (0 regular, +1 for a valence-3 singularity, -1 for valence 5)
+    \tparam NamedParameters a sequence of named parameters
+
+    \param tm the triangle mesh; it must outlive the layout and stay unchanged
+    \param field the cross field
+    \param singularities the singularity indices
+    \param np optional named parameters among the ones listed below
+
+    \pre `CGAL::is_triangle_mesh(tm)`
+
+    \cgalNamedParamsBegin
+      \cgalParamNBegin{vertex_point_map}
+        \cgalParamDescription{a property map associating points to the vertices of `tm`}
+        \cgalParamType{a readable property map, key `vertex_descriptor`, value `Point_3`}
+        \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+      \cgalParamNEnd
+      \cgalParamNBegin{geom_traits}
+        \cgalParamDescription{an instance of a geometric traits class}
+        \cgalParamType{`GeomTraits`}
+        \cgalParamDefault{a default-constructed `GeomTraits`}
+      \cgalParamNEnd
+      \cgalParamNBegin{tracing_length_weight}
+        \cgalParamDescription{weight of the advance along the field in an arc cost of the direction graph,
+          added to the drift; it breaks ties between drift-free paths in favour of the shortest}
+        \cgalParamType{`double`}
+        \cgalParamDefault{`0.01`}
+      \cgalParamNEnd
+    \cgalNamedParamsEnd
+  */
+  template <typename FaceFieldMap, typename VertexSingularityMap,
+            typename NamedParameters = parameters::Default_named_parameters>
+  Patch_layout(const TriangleMesh& tm, FaceFieldMap field, VertexSingularityMap singularities,
+               const NamedParameters& np = parameters::default_values())
+    : tm_(tm)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    if(!CGAL::is_triangle_mesh(tm)) throw std::invalid_argument("Patch_layout: the mesh must be a triangle mesh");
+    gt_ = choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+    length_weight_ = choose_parameter(get_parameter(np, internal_np::tracing_length_weight), 0.01);
+
+    for(vertex_descriptor v : vertices(tm)) { vindex_[v] = verts_.size(); verts_.push_back(v); points_.push_back(get(vpm, v)); }
+    for(face_descriptor f : faces(tm)) { findex_[f] = faces_.size(); faces_.push_back(f); }
+    for(edge_descriptor e : edges(tm)) { eindex_[e] = edges_.size(); edges_.push_back(e); }
+
+    std::map<face_descriptor, std::size_t> fim(findex_);
+    frames_.build(tm, boost::make_assoc_property_map(fim), vpm, field, gt_);
+    singular_.assign(verts_.size(), 0);
+    singularity_index_.assign(verts_.size(), 0);
+    for(vertex_descriptor v : vertices(tm)) {
+      const int s = get(singularities, v);
+      singularity_index_[vindex_[v]] = s;
+      singular_[vindex_[v]] = (s != 0);
+    }
+    build_vertex_frames();
+    edge_paths_.assign(edges_.size(), 0);
+    dirty_ = true;
+    graph_dirty_ = true;
+  }
+
+  /// the mesh
+  const TriangleMesh& mesh() const { return tm_; }
+
+  /*!
+    adds one path per maximal chain of feature edges (chains stop at vertices where the number of incident
+    feature edges is not two, and at sharp turns of the feature lines).
+    \tparam EdgeIsFeatureMap a readable property map, key `edge_descriptor`, value `bool`
+    \return the number of paths added
+  */
+  template <typename EdgeIsFeatureMap>
+  std::size_t add_feature_paths(EdgeIsFeatureMap is_feature)
+  {
+    std::vector<char> feat(edges_.size(), 0), used(edges_.size(), 0);
+    std::vector<int> degree(verts_.size(), 0);
+    for(std::size_t i = 0; i < edges_.size(); ++i)
+      if(get(is_feature, edges_[i])) {
+        feat[i] = 1;
+        ++degree[vindex_[source(edges_[i], tm_)]];
+        ++degree[vindex_[target(edges_[i], tm_)]];
+      }
+    // a feature chain goes on through a vertex of feature degree two
+    auto next_feature = [&](halfedge_descriptor h) -> std::optional<halfedge_descriptor> {
+      if(degree[vindex_[target(h, tm_)]] != 2) return std::nullopt;
+      for(halfedge_descriptor g : halfedges_around_source(target(h, tm_), tm_)) {
+        const std::size_t ei = eindex_.at(edge(g, tm_));
+        if(feat[ei] && !used[ei] && g != opposite(h, tm_)) return g;
+      }
+      return std::nullopt;
+    };
+    std::size_t added = 0;
+    for(std::size_t i = 0; i < edges_.size(); ++i) {
+      if(!feat[i] || used[i]) continue;
+      used[i] = 1;
+      halfedge_descriptor h0 = halfedge(edges_[i], tm_);
+      std::vector<halfedge_descriptor> chain{h0};
+      for(auto g = next_feature(h0); g; g = next_feature(*g)) { used[eindex_.at(edge(*g, tm_))] = 1; chain.push_back(*g); }
+      std::vector<halfedge_descriptor> back;
+      for(auto g = next_feature(opposite(h0, tm_)); g; g = next_feature(*g)) { used[eindex_.at(edge(*g, tm_))] = 1; back.push_back(opposite(*g, tm_)); }
+      std::reverse(back.begin(), back.end());
+      back.insert(back.end(), chain.begin(), chain.end());
+      Path p;
+      p.is_feature = true;
+      p.vertices.push_back(source(back.front(), tm_));
+      for(halfedge_descriptor h : back) {
+        p.vertices.push_back(target(h, tm_));
+        Vector_3 d = points_[vindex_[target(h, tm_)]] - points_[vindex_[source(h, tm_)]];
+        const double l = std::sqrt(CGAL::to_double(d * d));
+        p.directions.push_back(l > 0. ? d / l : d);
+      }
+      add_path(std::move(p));
+      ++added;
+    }
+    return added;
+  }
+
+  /// adds a path (its consecutive vertices must be adjacent) and returns its id
+  std::size_t add_path(Path p)
+  {
+    for(std::size_t i = 0; i + 1 < p.vertices.size(); ++i) {
+      auto e = edge(p.vertices[i], p.vertices[i + 1], tm_);
+      if(!e.second) throw std::invalid_argument("Patch_layout::add_path: consecutive vertices are not adjacent");
+      ++edge_paths_[eindex_.at(e.first)];
+    }
+    paths_.push_back(std::move(p));
+    alive_.push_back(1);
+    dirty_ = graph_dirty_ = true;
+    return paths_.size() - 1;
+  }
+
+  /// removes the path `id` (its id is not reused)
+  void remove_path(std::size_t id)
+  {
+    if(id >= paths_.size() || !alive_[id]) throw std::invalid_argument("Patch_layout::remove_path: no such path");
+    const Path& p = paths_[id];
+    for(std::size_t i = 0; i + 1 < p.vertices.size(); ++i)
+      --edge_paths_[eindex_.at(edge(p.vertices[i], p.vertices[i + 1], tm_).first)];
+    alive_[id] = 0;
+    dirty_ = graph_dirty_ = true;
+  }
+
+  /// ids of the paths in the layout, in insertion order
+  std::vector<std::size_t> path_ids() const
+  {
+    std::vector<std::size_t> ids;
+    for(std::size_t i = 0; i < paths_.size(); ++i) if(alive_[i]) ids.push_back(i);
+    return ids;
+  }
+  /// the path `id`
+  const Path& path(std::size_t id) const { return paths_.at(id); }
+
+  /// whether the edge `e` is on a path or on the mesh border (a patch boundary)
+  bool is_cut(edge_descriptor e) const { return edge_paths_[eindex_.at(e)] > 0 || is_border(e, tm_); }
+
+  /// the patches
+  const std::vector<Patch>& patches() const { update(); return patches_; }
+  /// the arcs
+  const std::vector<Arc>& arcs() const { update(); return arcs_; }
+  /// the patch of `f`
+  std::size_t patch_id(face_descriptor f) const { update(); return face_patch_[findex_.at(f)]; }
+
+  /// writes the patch id of every face into `face_patch_map` (writable, key `face_descriptor`, value `std::size_t`)
+  template <typename FacePatchMap>
+  void fill_face_patch_map(FacePatchMap face_patch_map) const
+  {
+    update();
+    for(std::size_t i = 0; i < faces_.size(); ++i) put(face_patch_map, faces_[i], face_patch_[i]);
+  }
+
+  /// the first validity condition (disk, convex, 3 to 6 corners) the patch `p` fails, `SATISFIED` if none
+  Condition validity(std::size_t p) const
+  {
+    const Patch& P = patches().at(p);
+    if(P.loops.size() != 1 || P.euler_characteristic != 1) return NOT_A_DISK;
+    for(Turn t : P.turns[0]) if(t == LEFT_TURN || t == U_TURN) return NOT_CONVEX;
+    if(P.corners.size() < 3 || P.corners.size() > 6) return BAD_VALENCE;
+    return SATISFIED;
+  }
+
+  /// the first quality condition (Equation 1 within the shortest side; singularities matching the number of
+  /// sides, at most one, none in a 4-sided patch) the valid patch `p` fails, `SATISFIED` if none
+  Condition quality(std::size_t p) const
+  {
+    const Condition v = validity(p);
+    if(v != SATISFIED) return v;
+    const Patch& P = patches_[p];
+    const std::vector<double>& e = P.side_lengths;
+    const std::size_t n = e.size();
+    const double tol = *std::min_element(e.begin(), e.end());
+    auto E = [&](std::size_t i) { return e[i % n]; };
+    for(std::size_t i = 0; i < n; ++i) {
+      bool ok = true;
+      if(n == 3) ok = E(i) <= E(i + 1) + E(i + 2) + tol;
+      else if(n == 4) ok = std::abs(E(i) - E(i + 2)) <= tol;
+      else if(n == 5) ok = E(i) + E(i + 1) + E(i + 4) + tol >= E(i + 2) + E(i + 3);
+      else ok = E(i) <= E(i + 2) + E(i + 4) + tol;
+      if(!ok) return SIDE_LENGTHS;
+    }
+    if(n == 4 && !P.singularities.empty()) return SINGULARITIES;
+    if(P.singularities.size() > 1) return SINGULARITIES;
+    if(P.singularities.size() == 1 && 4 - singularity_index_[vindex_.at(P.singularities[0])] != int(n))
+      return SINGULARITIES;
+    return SATISFIED;
+  }
+
+  /// the unit direction `k` (0..3) of the field frame at `v` (in the vertex tangent plane)
+  Vector_3 direction(vertex_descriptor v, int k) const { return vframes_[vindex_.at(v)][k & 3]; }
+
+  /// the node of `v` whose direction is closest to `d`
+  Node closest_node(vertex_descriptor v, const Vector_3& d) const
+  {
+    return Node{v, internal::closest_direction(vframes_[vindex_.at(v)], d)};
+  }
+
+  /// number of nodes and arcs of the direction graph G (built if needed)
+  std::pair<std::size_t, std::size_t> direction_graph_size() { update_graph(); return {graph_.number_of_nodes(), graph_.number_of_arcs()}; }
+
+  /*!
+    traces the cheapest path in G from `start` to the first node of `ends` reached (Boost.Graph's Dijkstra
+    stopped at that node); a loop when `start` is one of `ends`. Existing paths are crossed only
+    orthogonally. Nodes of singular vertices are not in G. Returns no path when no end can be reached.
+    The path is not added to the layout.
+  */
+  std::optional<Path> trace(const Node& start, const std::vector<Node>& ends)
+  {
+    update_graph();
+    std::vector<char> is_end(4 * verts_.size(), 0);
+    for(const Node& n : ends) is_end[4 * vindex_.at(n.vertex) + std::size_t(n.direction & 3)] = 1;
+    auto gp = graph_.shortest_path(4 * vindex_.at(start.vertex) + std::size_t(start.direction & 3), is_end);
+    if(!gp || gp->vertices.size() < 2) return std::nullopt;
+    Path p;
+    for(std::size_t i = 0; i < gp->vertices.size(); ++i) {
+      p.vertices.push_back(verts_[gp->vertices[i]]);
+      if(i + 1 < gp->vertices.size()) p.directions.push_back(vframes_[gp->vertices[i]][gp->directions[i]]);
+    }
+    return p;
+  }
+
+  /*!
+    whether the paths `a` and `b` share an edge, or a vertex where an edge of `a` and an edge of `b` are
+    parallel: their closest directions in the vertex's frame are of the same class (equal or opposite).
+    This is the rule G applies when it blocks nodes at path vertices, so a traced path never crosses the
+    paths of the layout tangentially.
+  */
+  bool cross_tangentially(const Path& a, const Path& b) const
+  {
+    std::map<vertex_descriptor, unsigned> classes; // bit c: a runs along class c at the vertex
+    std::map<std::pair<vertex_descriptor, vertex_descriptor>, char> edges_a;
+    auto cls = [&](vertex_descriptor v, vertex_descriptor w) {
+      const std::size_t i = vindex_.at(v);
+      return 1u << (internal::closest_direction(vframes_[i], Vector_3(points_[vindex_.at(w)] - points_[i])) % 2);
+    };
+    for(std::size_t i = 0; i + 1 < a.vertices.size(); ++i) {
+      const vertex_descriptor x = a.vertices[i], y = a.vertices[i + 1];
+      edges_a[std::minmax(x, y)] = 1;
+      classes[x] |= cls(x, y);
+      classes[y] |= cls(y, x);
+    }
+    for(std::size_t i = 0; i + 1 < b.vertices.size(); ++i) {
+      const vertex_descriptor x = b.vertices[i], y = b.vertices[i + 1];
+      if(edges_a.count(std::minmax(x, y))) return true;
+      auto cx = classes.find(x), cy = classes.find(y);
+      if(cx != classes.end() && (cx->second & cls(x, y))) return true;
+      if(cy != classes.end() && (cy->second & cls(y, x))) return true;
+    }
+    return false;
+  }
+
+  /// the quantization problem in neutral form: per patch its sides as ordered arc ids (cyclic order);
+  /// the arc lengths are `arcs()[id].length`
+  std::vector<std::vector<std::vector<std::size_t>>> quantization_sides() const
+  {
+    std::vector<std::vector<std::vector<std::size_t>>> r;
+    for(const Patch& P : patches()) r.push_back(P.sides);
+    return r;
+  }
+
+  /// the figures of the layout
+  Patch_layout_statistics statistics() const
+  {
+    update();
+    Patch_layout_statistics s;
+    s.patches = patches_.size();
+    for(std::size_t p = 0; p < patches_.size(); ++p) {
+      if(validity(p) == SATISFIED) ++s.valid_patches;
+      if(quality(p) == SATISFIED) ++s.quality_patches;
+      ++s.patches_by_valence[patches_[p].corners.size()];
+    }
+    s.paths = path_ids().size();
+    s.t_junctions = t_junctions_;
+    s.seconds = rebuild_seconds_;
+    return s;
+  }
+
+  /// writes the mesh as an ASCII PLY with one colour per patch
+  void write_ply(std::ostream& os) const
+  {
+    update();
+    os << "ply\nformat ascii 1.0\nelement vertex " << verts_.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
+       << "element face " << faces_.size() << "\nproperty list uchar int vertex_indices\n"
+       << "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+    for(const Point_3& p : points_) os << p.x() << " " << p.y() << " " << p.z() << "\n";
+    for(std::size_t i = 0; i < faces_.size(); ++i) {
+      os << "3";
+      for(vertex_descriptor v : vertices_around_face(halfedge(faces_[i], tm_), tm_)) os << " " << vindex_.at(v);
+      const std::size_t c = face_patch_[i] * 2654435761u;
+      os << " " << (64 + c % 192) << " " << (64 + (c >> 8) % 192) << " " << (64 + (c >> 16) % 192) << "\n";
+    }
+  }
+
+  /// writes the paths as CGAL polylines (one line per path: number of points, then the coordinates)
+  void write_polylines(std::ostream& os) const
+  {
+    for(std::size_t id : path_ids()) {
+      os << paths_[id].vertices.size();
+      for(vertex_descriptor v : paths_[id].vertices) { const Point_3& p = points_[vindex_.at(v)]; os << " " << p.x() << " " << p.y() << " " << p.z(); }
+      os << "\n";
+    }
+  }
+
+private:
+  void build_vertex_frames()
+  {
+    vframes_.assign(verts_.size(), std::array<Vector_3, 4>());
+    nbrs_.assign(verts_.size(), {});
+    for(std::size_t i = 0; i < verts_.size(); ++i) {
+      const vertex_descriptor v = verts_[i];
+      Vector_3 n(0, 0, 0);
+      std::optional<face_descriptor> ref;
+      for(face_descriptor f : faces_around_target(halfedge(v, tm_), tm_)) {
+        if(f == GT::null_face()) continue;
+        n = n + frames_.normals[findex_.at(f)];
+        if(!ref || findex_.at(f) < findex_.at(*ref)) ref = f; // the lowest-index face: deterministic
+      }
+      for(vertex_descriptor w : vertices_around_target(halfedge(v, tm_), tm_)) nbrs_[i].push_back(vindex_.at(w));
+      std::sort(nbrs_[i].begin(), nbrs_[i].end());
+      const double nl = std::sqrt(CGAL::to_double(n * n));
+      if(!ref || nl == 0.) continue;
+      n = n / nl;
+      Vector_3 d = frames_.dirs[findex_.at(*ref)][0];
+      d = d - n * CGAL::to_double(d * n);
+      const double dl = std::sqrt(CGAL::to_double(d * d));
+      if(dl == 0.) continue;
+      vframes_[i] = internal::cross_directions(Vector_3(d / dl), n);
+    }
+  }
+
+  void update_graph()
+  {
+    if(!graph_dirty_) return;
+    std::vector<std::vector<std::size_t>> blocked(verts_.size());
+    std::vector<unsigned char> mask(verts_.size(), 0);
+    for(std::size_t i = 0; i < edges_.size(); ++i) {
+      if(!is_cut(edges_[i])) continue;
+      const std::size_t a = vindex_.at(source(edges_[i], tm_)), b = vindex_.at(target(edges_[i], tm_));
+      blocked[a].push_back(b);
+      blocked[b].push_back(a);
+      const Vector_3 e = points_[b] - points_[a];
+      mask[a] |= (unsigned char)(1u << (internal::closest_direction(vframes_[a], e) % 2));
+      mask[b] |= (unsigned char)(1u << (internal::closest_direction(vframes_[b], e) % 2));
+    }
+    std::vector<char> excluded(singular_);
+    for(std::size_t i = 0; i < verts_.size(); ++i)
+      if(vframes_[i][0] == Vector_3(0, 0, 0)) excluded[i] = 1; // no field there
+    graph_.build(vframes_, nbrs_, points_, excluded, blocked, mask, length_weight_);
+    graph_dirty_ = false;
+  }
+
+  // the next boundary halfedge of the loop after `h`, turning around target(h) inside the patch
+  halfedge_descriptor next_boundary(halfedge_descriptor h) const
+  {
+    halfedge_descriptor g = next(h, tm_);
+    while(!is_cut(edge(g, tm_))) g = next(opposite(g, tm_), tm_);
+    return g;
+  }
+
+  Vector_3 vec(halfedge_descriptor h) const
+  {
+    return points_[vindex_.at(target(h, tm_))] - points_[vindex_.at(source(h, tm_))];
+  }
+
+  static double angle(const Vector_3& a, const Vector_3& b)
+  {
+    const double c = CGAL::to_double(a * b) / std::sqrt(CGAL::to_double(a * a) * CGAL::to_double(b * b));
+    return std::acos((std::max)(-1., (std::min)(1., c)));
+  }
+
+  // turn at target(h) between h and the next boundary halfedge (see the class documentation)
+  Turn classify(halfedge_descriptor h) const
+  {
+    const halfedge_descriptor out = next_boundary(h);
+    const vertex_descriptor v = target(h, tm_);
+    std::size_t f = findex_.at(face(h, tm_));
+    const int a = internal::closest_direction(frames_.dirs[f], vec(h));
+    Vector_3 d = frames_.dirs[f][a];
+    double fan = 0.;
+    halfedge_descriptor g = h;
+    for(;;) {
+      const halfedge_descriptor gn = next(g, tm_); // leaves v inside face(g)
+      fan += angle(vec(gn), -vec(g));
+      if(is_cut(edge(gn, tm_))) break;
+      const std::size_t f2 = findex_.at(face(opposite(gn, tm_), tm_));
+      d = internal::transport_across_edge(d, vec(gn), frames_.normals[f], frames_.normals[f2]);
+      f = f2;
+      g = opposite(gn, tm_);
+    }
+    const int a2 = internal::closest_direction(frames_.dirs[f], d);
+    const int b = internal::closest_direction(frames_.dirs[f], vec(out));
+    const int t = ((b - a2) % 4 + 4) % 4;
+    double total = 0.;
+    bool on_border = false;
+    for(halfedge_descriptor k : halfedges_around_target(v, tm_)) {
+      if(is_border(k, tm_)) { on_border = true; continue; }
+      total += angle(vec(next(k, tm_)), -vec(k));
+    }
+    if(!on_border && total > 0.) fan *= 2. * CGAL_PI / total; // cone vertices: angles relative to the full turn
+    const double measured = (CGAL_PI - fan) / (CGAL_PI / 2.);
+    int best = t;
+    for(int k = t - 8; k <= t + 8; k += 4)
+      if(std::abs(k - measured) < std::abs(best - measured)) best = k;
+    if(best == 0) return STRAIGHT;
+    if(best == 1) return RIGHT_TURN;
+    if(best == -1) return LEFT_TURN;
+    return U_TURN;
+  }
+
+  void update() const { if(dirty_) const_cast<Patch_layout*>(this)->rebuild(); }
+
+  void rebuild()
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    // 1. patches: flood fill across edges that are not cut
+    face_patch_.assign(faces_.size(), std::size_t(-1));
+    patches_.clear();
+    for(std::size_t s = 0; s < faces_.size(); ++s) {
+      if(face_patch_[s] != std::size_t(-1)) continue;
+      const std::size_t pid = patches_.size();
+      patches_.emplace_back();
+      std::vector<std::size_t> stack{s};
+      face_patch_[s] = pid;
+      while(!stack.empty()) {
+        const std::size_t fi = stack.back();
+        stack.pop_back();
+        patches_[pid].faces.push_back(faces_[fi]);
+        for(halfedge_descriptor h : halfedges_around_face(halfedge(faces_[fi], tm_), tm_)) {
+          if(is_cut(edge(h, tm_))) continue;
+          const std::size_t fj = findex_.at(face(opposite(h, tm_), tm_));
+          if(face_patch_[fj] == std::size_t(-1)) { face_patch_[fj] = pid; stack.push_back(fj); }
+        }
+      }
+      std::sort(patches_[pid].faces.begin(), patches_[pid].faces.end(),
+                [&](face_descriptor x, face_descriptor y) { return findex_.at(x) < findex_.at(y); });
+    }
+    // 2. boundary loops and turns
+    std::vector<char> corner(verts_.size(), 0);
+    std::map<halfedge_descriptor, char> visited;
+    for(Patch& P : patches_) {
+      std::map<vertex_descriptor, char> on_loop;
+      std::size_t boundary_halfedges = 0;
+      for(face_descriptor f : P.faces)
+        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) {
+          if(!is_cut(edge(h, tm_)) || visited.count(h)) continue;
+          std::vector<halfedge_descriptor> loop;
+          std::vector<Turn> turns;
+          halfedge_descriptor g = h;
+          do {
+            visited[g] = 1;
+            loop.push_back(g);
+            turns.push_back(classify(g));
+            on_loop[target(g, tm_)] = 1;
+            g = next_boundary(g);
+          } while(g != h && loop.size() <= 3 * faces_.size());
+          boundary_halfedges += loop.size();
+          P.loops.push_back(std::move(loop));
+          P.turns.push_back(std::move(turns));
+        }
+      // Euler characteristic of the patch cut open along its boundary: every loop position is a vertex
+      std::map<vertex_descriptor, char> all;
+      for(face_descriptor f : P.faces) for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_)) all[v] = 1;
+      std::size_t interior = 0;
+      for(const auto& v : all) {
+        if(!on_loop.count(v.first)) {
+          ++interior;
+          if(singular_[vindex_.at(v.first)]) P.singularities.push_back(v.first);
+        }
+      }
+      const long V = long(interior + boundary_halfedges);
+      const long E = long((3 * P.faces.size() - boundary_halfedges) / 2 + boundary_halfedges);
+      P.euler_characteristic = int(V - E + long(P.faces.size()));
+      for(std::size_t l = 0; l < P.loops.size(); ++l)
+        for(std::size_t i = 0; i < P.loops[l].size(); ++i)
+          if(P.turns[l][i] != STRAIGHT) {
+            if(l == 0) P.corners.push_back(target(P.loops[l][i], tm_));
+            corner[vindex_.at(target(P.loops[l][i], tm_))] = 1;
+          }
+    }
+    // 3. arcs: maximal chains of cut edges broken at corners and at vertices of cut degree other than 2
+    std::vector<int> cut_degree(verts_.size(), 0);
+    for(std::size_t i = 0; i < edges_.size(); ++i)
+      if(is_cut(edges_[i])) { ++cut_degree[vindex_.at(source(edges_[i], tm_))]; ++cut_degree[vindex_.at(target(edges_[i], tm_))]; }
+    auto breaks = [&](vertex_descriptor v) { const std::size_t i = vindex_.at(v); return corner[i] || cut_degree[i] != 2; };
+    auto next_cut = [&](halfedge_descriptor h) -> halfedge_descriptor {
+      for(halfedge_descriptor g : halfedges_around_source(target(h, tm_), tm_))
+        if(g != opposite(h, tm_) && is_cut(edge(g, tm_))) return g;
+      return h;
+    };
+    arcs_.clear();
+    arc_of_edge_.assign(edges_.size(), std::size_t(-1));
+    for(std::size_t i = 0; i < edges_.size(); ++i) {
+      if(!is_cut(edges_[i]) || arc_of_edge_[i] != std::size_t(-1)) continue;
+      halfedge_descriptor h = halfedge(edges_[i], tm_);
+      // walk back to the start of the chain (or once around a closed chain)
+      halfedge_descriptor s = h;
+      while(!breaks(source(s, tm_))) {
+        const halfedge_descriptor p = opposite(next_cut(opposite(s, tm_)), tm_);
+        if(p == h) break;
+        s = p;
+      }
+      Arc a;
+      halfedge_descriptor g = s;
+      do {
+        arc_of_edge_[eindex_.at(edge(g, tm_))] = arcs_.size();
+        a.halfedges.push_back(g);
+        if(breaks(target(g, tm_))) break;
+        g = next_cut(g);
+      } while(g != s);
+      for(int side = 0; side < 2; ++side) {
+        const halfedge_descriptor k = side == 0 ? a.halfedges.front() : opposite(a.halfedges.front(), tm_);
+        if(!is_border(k, tm_)) a.patches[side] = std::ptrdiff_t(face_patch_[findex_.at(face(k, tm_))]);
+      }
+      for(halfedge_descriptor k : a.halfedges) {
+        const halfedge_descriptor kf = is_border(k, tm_) ? opposite(k, tm_) : k;
+        const auto& dirs = frames_.dirs[findex_.at(face(kf, tm_))];
+        const Vector_3 e = vec(k);
+        a.length += std::abs(CGAL::to_double(e * dirs[internal::closest_direction(dirs, e)]));
+      }
+      arcs_.push_back(std::move(a));
+    }
+    // 4. sides of the first loop: arcs from one corner to the next
+    t_junctions_ = 0;
+    std::vector<char> tj(verts_.size(), 0);
+    for(Patch& P : patches_) {
+      if(P.loops.empty()) continue;
+      const auto& L = P.loops[0];
+      const auto& T = P.turns[0];
+      std::size_t start = 0; // start after a corner so that sides are not split by the loop's origin
+      for(std::size_t i = 0; i < L.size(); ++i) if(T[i] != STRAIGHT) { start = (i + 1) % L.size(); break; }
+      std::vector<std::size_t> side;
+      double len = 0.;
+      std::size_t last_arc = std::size_t(-1);
+      for(std::size_t j = 0; j < L.size(); ++j) {
+        const std::size_t i = (start + j) % L.size();
+        const std::size_t arc = arc_of_edge_[eindex_.at(edge(L[i], tm_))];
+        if(arc != last_arc) { side.push_back(arc); len += arcs_[arc].length; last_arc = arc; }
+        const std::size_t vi = vindex_.at(target(L[i], tm_));
+        if(T[i] == STRAIGHT && cut_degree[vi] >= 3 && !tj[vi]) { tj[vi] = 1; ++t_junctions_; }
+        if(T[i] != STRAIGHT || j + 1 == L.size()) {
+          P.sides.push_back(side);
+          P.side_lengths.push_back(len);
+          side.clear();
+          len = 0.;
+          last_arc = std::size_t(-1);
+        }
+      }
+    }
+    dirty_ = false;
+    rebuild_seconds_ = timer.time();
+  }
+
+  const TriangleMesh& tm_;
+  GeomTraits gt_;
+  double length_weight_ = 0.01;
+  std::vector<vertex_descriptor> verts_;
+  std::vector<face_descriptor> faces_;
+  std::vector<edge_descriptor> edges_;
+  std::vector<Point_3> points_;
+  std::map<vertex_descriptor, std::size_t> vindex_;
+  std::map<face_descriptor, std::size_t> findex_;
+  std::map<edge_descriptor, std::size_t> eindex_;
+  internal::Face_frames<TriangleMesh, GeomTraits> frames_;
+  std::vector<std::array<Vector_3, 4>> vframes_;
+  std::vector<std::vector<std::size_t>> nbrs_;
+  std::vector<char> singular_;
+  std::vector<int> singularity_index_;
+  std::vector<int> edge_paths_;
+  std::vector<Path> paths_;
+  std::vector<char> alive_;
+  internal::Direction_graph<Vector_3> graph_;
+  bool graph_dirty_ = true;
+  bool dirty_ = true;
+  std::vector<std::size_t> face_patch_;
+  std::vector<Patch> patches_;
+  std::vector<Arc> arcs_;
+  std::vector<std::size_t> arc_of_edge_;
+  std::size_t t_junctions_ = 0;
+  double rebuild_seconds_ = 0.;
+};
+
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_PATCH_LAYOUT_H

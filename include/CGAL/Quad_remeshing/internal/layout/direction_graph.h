@@ -1,0 +1,229 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The graph G of paper section 5.3: four nodes per non-singular vertex (one per field direction),
+// field-aligned arcs weighted by drift, two-hop virtual arcs, and shortest paths with Boost.Graph's
+// Dijkstra stopped at the first end node reached.
+
+#ifndef CGAL_QUAD_REMESHING_INTERNAL_LAYOUT_DIRECTION_GRAPH_H
+#define CGAL_QUAD_REMESHING_INTERNAL_LAYOUT_DIRECTION_GRAPH_H
+
+#include <CGAL/Quad_remeshing/internal/layout/field_directions.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+/// A path found in G: the mesh vertices (by index) and, at each, the index of the field direction followed
+/// (in that vertex's frame).
+struct Graph_path
+{
+  std::vector<std::size_t> vertices;
+  std::vector<int> directions;
+  double cost = 0.;
+};
+
+/// Thrown by the visitor to stop Dijkstra at the first end node whose distance is final.
+struct Dijkstra_end_reached
+{
+  std::size_t node;
+};
+
+template <typename EndFlags>
+struct Stop_at_end_visitor : public boost::default_dijkstra_visitor
+{
+  const EndFlags* is_end;
+  std::size_t skip; // the start node of a loop is the end, but not at distance 0
+  template <typename G>
+  void examine_vertex(std::size_t u, const G&) const
+  {
+    if(u != skip && (*is_end)[u]) throw Dijkstra_end_reached{u};
+  }
+};
+
+/*
+  G over a triangle mesh. Node `4*v + k` is direction `k` of the frame of vertex `v`. Nodes of singular
+  vertices have no arcs. Existing paths block arcs that would run along them: a path edge carries no arc,
+  and at a path vertex the directions parallel to the path (the "tangential" class, k mod 2) neither enter
+  nor leave, so a new path can only cross a path orthogonally (Figure 11) or end on it (T-junction).
+  Crossing needs no explicit zero-weight arc here because G is built on the uncut mesh: the two sides of a
+  path share the vertex, and entering and leaving it in the same orthogonal direction is free.
+
+  Weight of an arc: |drift| + length_weight * advance, where drift = (v_j - v_i) . f_perp is the deviation
+  orthogonal to the averaged field direction f (Tarini et al. 2011) and advance = (v_j - v_i) . f. The small
+  advance term only breaks ties between drift-free paths in favour of the shorter one. The original
+  tracer uses length * (1 + 100 (angle / max_angle)^2) instead; both vanish-or-grow with the deviation,
+  but the drift form lets the two-hop arcs below cancel opposite deviations, which the angle form cannot.
+
+  Two-hop virtual arcs (v_i -> v_j -> v_l with drifts of opposite sign) carry the modulus of the summed
+  signed drift so that a zig-zag that follows the field on average is not over-penalised; the middle node
+  is recorded and put back in the path.
+*/
+template <typename Vector_3>
+class Direction_graph
+{
+public:
+  struct Arc
+  {
+    double weight = 0.;
+    std::ptrdiff_t middle = -1; // the middle node of a two-hop arc, -1 for a mesh-edge arc
+  };
+  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property, Arc> Graph;
+
+  /// `frames[v]`: the four directions at vertex `v`; `nbrs[v]`: its neighbours (ascending order for
+  /// determinism); `points[v]`: its position; `singular[v]`: excluded; `blocked_edges`: set of
+  /// (min,max) vertex pairs on paths; `tangent_mask[v]`: bit c set when directions of class c (k mod 2)
+  /// are tangential to a path at v.
+  template <typename Point_3>
+  void build(const std::vector<std::array<Vector_3, 4>>& frames,
+             const std::vector<std::vector<std::size_t>>& nbrs,
+             const std::vector<Point_3>& points,
+             const std::vector<char>& singular,
+             const std::vector<std::vector<std::size_t>>& blocked_neighbours,
+             const std::vector<unsigned char>& tangent_mask,
+             double length_weight)
+  {
+    const std::size_t nv = frames.size();
+    g_ = Graph(4 * nv + 1); // the last node is the spare source used for loops
+    frames_ = &frames;
+    // direct arcs, kept per source node for the two-hop pass
+    struct Hop { std::size_t to; double drift, advance; };
+    std::vector<std::vector<Hop>> hops(4 * nv);
+    for(std::size_t i = 0; i < nv; ++i) {
+      if(singular[i]) continue;
+      for(std::size_t j : nbrs[i]) {
+        if(singular[j] || is_blocked(blocked_neighbours, i, j)) continue;
+        const Vector_3 e = points[j] - points[i];
+        const double el = std::sqrt(CGAL::to_double(e * e));
+        if(el == 0.) continue;
+        // an edge parallel to a path at either end would run along it (same rule as the tangential test)
+        if((tangent_mask[i] & (1u << (closest_direction(frames[i], e) % 2))) ||
+           (tangent_mask[j] & (1u << (closest_direction(frames[j], Vector_3(-e)) % 2))))
+          continue;
+        for(int k = 0; k < 4; ++k) {
+          if(tangent_mask[i] & (1u << (k % 2))) continue;
+          const int m = closest_direction(frames[j], frames[i][k]);
+          if(tangent_mask[j] & (1u << (m % 2))) continue;
+          Vector_3 f = frames[i][k] + frames[j][m];
+          const double fl = std::sqrt(CGAL::to_double(f * f));
+          if(fl == 0.) continue;
+          f = f / fl;
+          const double advance = CGAL::to_double(e * f);
+          if(advance <= el * std::cos(CGAL_PI / 4.)) continue; // not within 45 degrees of the field
+          const Vector_3 n = CGAL::cross_product(frames[i][0], frames[i][1]);
+          const double drift = CGAL::to_double(e * CGAL::cross_product(n, f));
+          hops[4 * i + k].push_back(Hop{4 * j + std::size_t(m), drift, advance});
+        }
+      }
+    }
+    for(std::size_t u = 0; u < hops.size(); ++u) {
+      std::map<std::size_t, Arc> out; // lightest arc per target, ordered: deterministic insertion
+      for(const Hop& h : hops[u]) {
+        const double w = std::abs(h.drift) + length_weight * h.advance;
+        auto it = out.find(h.to);
+        if(it == out.end() || w < it->second.weight) out[h.to] = Arc{w, -1};
+      }
+      for(const Hop& h1 : hops[u])
+        for(const Hop& h2 : hops[h1.to]) {
+          if(h2.to / 4 == u / 4 || h1.drift * h2.drift >= 0.) continue; // only zig-zags gain
+          const double w = std::abs(h1.drift + h2.drift) + length_weight * (h1.advance + h2.advance);
+          auto it = out.find(h2.to);
+          if(it == out.end() || w < it->second.weight) out[h2.to] = Arc{w, std::ptrdiff_t(h1.to)};
+        }
+      for(const auto& a : out) boost::add_edge(u, a.first, a.second, g_);
+    }
+  }
+
+  std::size_t number_of_nodes() const { return boost::num_vertices(g_) - 1; }
+  std::size_t number_of_arcs() const { return boost::num_edges(g_); }
+
+  /// Shortest path from `start` to the first node with `is_end[node]` (a loop when `is_end[start]`).
+  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<char>& is_end)
+  {
+    const std::size_t n = boost::num_vertices(g_);
+    const std::size_t spare = n - 1;
+    std::size_t source = start;
+    if(is_end[start]) {
+      // a loop: start from a spare copy of the start node so that the start node itself is a target
+      typename boost::graph_traits<Graph>::out_edge_iterator e, e_end;
+      for(boost::tie(e, e_end) = boost::out_edges(start, g_); e != e_end; ++e)
+        boost::add_edge(spare, boost::target(*e, g_), g_[*e], g_);
+      source = spare;
+    }
+    std::vector<std::size_t> pred(n);
+    std::vector<double> dist(n, (std::numeric_limits<double>::max)());
+    Stop_at_end_visitor<std::vector<char>> vis;
+    std::vector<char> ends(is_end);
+    ends.resize(n, 0);
+    vis.is_end = &ends;
+    vis.skip = source;
+    std::optional<std::size_t> reached;
+    try {
+      boost::dijkstra_shortest_paths(g_, source,
+          boost::predecessor_map(boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g_)))
+              .distance_map(boost::make_iterator_property_map(dist.begin(), boost::get(boost::vertex_index, g_)))
+              .weight_map(boost::get(&Arc::weight, g_))
+              .visitor(vis));
+    } catch(const Dijkstra_end_reached& r) {
+      reached = r.node;
+    }
+    if(source == spare) boost::clear_out_edges(spare, g_);
+    if(!reached) return std::nullopt;
+
+    std::vector<std::size_t> nodes;
+    for(std::size_t u = *reached;; u = pred[u]) {
+      nodes.push_back(u);
+      if(u == source) break;
+    }
+    if(source == spare) nodes.back() = start;
+    std::reverse(nodes.begin(), nodes.end());
+    Graph_path p;
+    p.cost = dist[*reached];
+    for(std::size_t i = 0; i < nodes.size(); ++i) {
+      if(i > 0) {
+        const std::size_t from = (i == 1 && source == spare) ? spare : nodes[i - 1];
+        // recover the middle node of a two-hop arc (the lightest arc between the two nodes)
+        std::ptrdiff_t middle = -1;
+        double best = (std::numeric_limits<double>::max)();
+        typename boost::graph_traits<Graph>::out_edge_iterator e, e_end;
+        for(boost::tie(e, e_end) = boost::out_edges(from == spare ? nodes[0] : from, g_); e != e_end; ++e)
+          if(boost::target(*e, g_) == nodes[i] && g_[*e].weight < best) { best = g_[*e].weight; middle = g_[*e].middle; }
+        if(middle >= 0) push(p, std::size_t(middle));
+      }
+      push(p, nodes[i]);
+    }
+    return p;
+  }
+
+private:
+  static bool is_blocked(const std::vector<std::vector<std::size_t>>& blocked, std::size_t i, std::size_t j)
+  {
+    for(std::size_t b : blocked[i]) if(b == j) return true;
+    return false;
+  }
+  static void push(Graph_path& p, std::size_t node)
+  {
+    p.vertices.push_back(node / 4);
+    p.directions.push_back(int(node % 4));
+  }
+
+  Graph g_;
+  const std::vector<std::array<Vector_3, 4>>* frames_ = nullptr;
+};
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif

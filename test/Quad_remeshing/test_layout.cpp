@@ -1,0 +1,318 @@
+// Tests of Patch_layout: cutting along features, boundary classification, validity, tracing in G.
+#include "test_support.h"
+
+#include <CGAL/Quad_remeshing/Patch_layout.h>
+
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Real_timer.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <array>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+using qr_test::Mesh;
+using qr_test::Point_3;
+typedef qr_test::Kernel::Vector_3 Vector_3;
+typedef CGAL::Quad_remeshing::Patch_layout<Mesh> Layout;
+typedef Mesh::Vertex_index V;
+typedef Mesh::Face_index F;
+typedef Mesh::Edge_index E;
+
+// an n x n grid of unit squares in the plane z = 0, each split by the diagonal (i,j)-(i+1,j+1);
+// vertex (i,j) has index j*(n+1)+i
+Mesh grid(int n)
+{
+  Mesh m;
+  std::vector<V> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) v.push_back(m.add_vertex(Point_3(i, j, 0)));
+  auto at = [&](int i, int j) { return v[std::size_t(j * (n + 1) + i)]; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return m;
+}
+
+// the closed box [0,n]^3 with an n x n grid of split squares on each side
+Mesh box(int n)
+{
+  Mesh m;
+  std::map<std::array<int, 3>, V> index;
+  auto vertex = [&](std::array<int, 3> p) {
+    auto it = index.find(p);
+    if(it != index.end()) return it->second;
+    return index[p] = m.add_vertex(Point_3(p[0], p[1], p[2]));
+  };
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      for(int a = 0; a < n; ++a)
+        for(int b = 0; b < n; ++b) {
+          std::array<std::array<int, 3>, 4> q;
+          const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
+          for(int k = 0; k < 4; ++k) { q[k][axis] = side * n; q[k][u] = a + du[k]; q[k][w] = b + dw[k]; }
+          V c[4];
+          for(int k = 0; k < 4; ++k) c[k] = vertex(q[k]);
+          if(side == 1) { m.add_face(c[0], c[1], c[2]); m.add_face(c[0], c[2], c[3]); }
+          else { m.add_face(c[0], c[2], c[1]); m.add_face(c[0], c[3], c[2]); }
+        }
+    }
+  return m;
+}
+
+// per face: the first coordinate axis lying in the face plane (the box's faces are axis-aligned)
+Mesh::Property_map<F, Vector_3> axis_field(Mesh& m)
+{
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(0, 0, 0)).first;
+  for(F f : m.faces()) {
+    const Vector_3 n = CGAL::Polygon_mesh_processing::compute_face_normal(f, m);
+    const Vector_3 axes[3] = {Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1)};
+    for(const Vector_3& a : axes)
+      if(std::abs(a * n) < 0.5) { field[f] = a; break; }
+  }
+  return field;
+}
+
+// edges whose faces meet at a dihedral angle above 60 degrees
+Mesh::Property_map<E, bool> sharp_edges(Mesh& m)
+{
+  auto feature = m.add_property_map<E, bool>("e:feature", false).first;
+  for(E e : m.edges()) {
+    if(m.is_border(e)) continue;
+    const Vector_3 a = CGAL::Polygon_mesh_processing::compute_face_normal(m.face(m.halfedge(e, 0)), m);
+    const Vector_3 b = CGAL::Polygon_mesh_processing::compute_face_normal(m.face(m.halfedge(e, 1)), m);
+    feature[e] = a * b < 0.5;
+  }
+  return feature;
+}
+
+CGAL::Constant_property_map<V, int> no_singularity(0);
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(layout)
+
+BOOST_AUTO_TEST_CASE(box_features_give_six_valid_quads)
+{
+  Mesh m = box(4);
+  auto field = axis_field(m);
+  Layout layout(m, field, no_singularity);
+  BOOST_TEST(layout.add_feature_paths(sharp_edges(m)) == 12u); // the 12 box edges (corners have feature degree 3)
+  BOOST_TEST(layout.patches().size() == 6u);
+  for(std::size_t p = 0; p < layout.patches().size(); ++p) {
+    const Layout::Patch& P = layout.patches()[p];
+    BOOST_TEST(P.faces.size() == 32u);
+    BOOST_TEST(P.corners.size() == 4u);
+    BOOST_TEST(P.sides.size() == 4u);
+    BOOST_TEST(P.euler_characteristic == 1);
+    for(double l : P.side_lengths) BOOST_TEST(l == 4., boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(layout.validity(p) == Layout::SATISFIED);
+    BOOST_TEST(layout.quality(p) == Layout::SATISFIED);
+  }
+  // 12 arcs, each between two different patches
+  BOOST_TEST(layout.arcs().size() == 12u);
+  for(const Layout::Arc& a : layout.arcs()) {
+    BOOST_TEST(a.patches[0] >= 0);
+    BOOST_TEST(a.patches[1] >= 0);
+    BOOST_TEST(a.patches[0] != a.patches[1]);
+  }
+  const auto s = layout.statistics();
+  BOOST_TEST(s.patches == 6u);
+  BOOST_TEST(s.valid_patches == 6u);
+  BOOST_TEST(s.quality_patches == 6u);
+  BOOST_TEST(s.patches_by_valence.at(4) == 6u);
+  BOOST_TEST(s.report()["paths"].number() == 12.);
+}
+
+BOOST_AUTO_TEST_CASE(partial_feature_line_is_a_u_turn)
+{
+  // a path from the left border into the middle of a grid: its free end is a U-turn, the patch is not valid
+  Mesh m = grid(6);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  Layout layout(m, field, no_singularity);
+  BOOST_TEST(layout.patches().size() == 1u);
+  BOOST_TEST(layout.validity(0) == Layout::SATISFIED); // the square: four right turns
+  Layout::Path p;
+  for(int i = 0; i <= 3; ++i) {
+    p.vertices.push_back(V(3 * 7 + i));
+    if(i < 3) p.directions.push_back(Vector_3(1, 0, 0));
+  }
+  const std::size_t id = layout.add_path(p);
+  BOOST_TEST(layout.patches().size() == 1u);
+  const Layout::Patch& P = layout.patches()[0];
+  std::map<std::size_t, Layout::Turn> turn;
+  for(std::size_t i = 0; i < P.loops[0].size(); ++i) turn[std::size_t(target(P.loops[0][i], m))] = P.turns[0][i];
+  // hand check: the free end (3,3) is a U-turn; where the path leaves the border at (0,3) both sides turn
+  // right (convex 90 degree corners); a border vertex like (0,1) is straight; the square corners turn right
+  BOOST_TEST(turn.at(3 * 7 + 3) == Layout::U_TURN);
+  BOOST_TEST(turn.at(3 * 7 + 0) == Layout::RIGHT_TURN);
+  BOOST_TEST(turn.at(1 * 7 + 0) == Layout::STRAIGHT);
+  BOOST_TEST(turn.at(0) == Layout::RIGHT_TURN);
+  BOOST_TEST(layout.validity(0) == Layout::NOT_CONVEX);
+  layout.remove_path(id);
+  BOOST_TEST(layout.validity(0) == Layout::SATISFIED);
+}
+
+BOOST_AUTO_TEST_CASE(traced_path_on_flat_grid_is_a_grid_line)
+{
+  const int n = 10;
+  Mesh m = grid(n);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  Layout layout(m, field, no_singularity);
+  const V start(5 * (n + 1)); // (0,5)
+  const Layout::Node s = layout.closest_node(start, Vector_3(1, 0, 0));
+  std::vector<Layout::Node> ends;
+  for(int j = 0; j <= n; ++j) ends.push_back(layout.closest_node(V(j * (n + 1) + n), Vector_3(1, 0, 0)));
+  auto path = layout.trace(s, ends);
+  BOOST_REQUIRE(path);
+  BOOST_TEST(path->vertices.size() == std::size_t(n + 1));
+  for(std::size_t i = 0; i < path->vertices.size(); ++i) {
+    const Point_3& p = m.point(path->vertices[i]);
+    BOOST_TEST(p.x() == double(i));
+    BOOST_TEST(p.y() == 5.);
+  }
+  // deterministic: a second layout traces the same vertices
+  Layout again(m, field, no_singularity);
+  auto path2 = again.trace(s, ends);
+  BOOST_REQUIRE(path2);
+  BOOST_TEST(path2->vertices == path->vertices);
+
+  // the row is a path now; a column traced across it crosses it orthogonally, never along it
+  layout.add_path(*path);
+  std::vector<Layout::Node> top;
+  for(int i = 0; i <= n; ++i) top.push_back(layout.closest_node(V(n * (n + 1) + i), Vector_3(0, 1, 0)));
+  auto column = layout.trace(layout.closest_node(V(3), Vector_3(0, 1, 0)), top);
+  BOOST_REQUIRE(column);
+  BOOST_TEST(!layout.cross_tangentially(*path, *column));
+  BOOST_TEST(layout.cross_tangentially(*path, *path));
+  for(std::size_t i = 0; i < column->vertices.size(); ++i) BOOST_TEST(m.point(column->vertices[i]).x() == 3.);
+  layout.add_path(*column);
+  BOOST_TEST(layout.patches().size() == 4u);
+  for(std::size_t p = 0; p < 4; ++p) BOOST_TEST(layout.validity(p) == Layout::SATISFIED);
+  // starting on the row in its own direction is tangential: no node there
+  auto along = layout.trace(layout.closest_node(V(5 * (n + 1) + 1), Vector_3(1, 0, 0)), ends);
+  BOOST_TEST(!along);
+  // a loop needs a closed field line: on the flat grid there is none
+  const Layout::Node c = layout.closest_node(V(2 * (n + 1) + 2), Vector_3(1, 0, 0));
+  BOOST_TEST(!layout.trace(c, {c}));
+}
+
+BOOST_AUTO_TEST_CASE(t_junction_splits_arc)
+{
+  // a column from the bottom border to the row path ends in a T-junction: the upper patch sees a straight
+  // vertex there, so its side along the row has two arcs
+  const int n = 8;
+  Mesh m = grid(n);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  Layout layout(m, field, no_singularity);
+  Layout::Path row;
+  for(int i = 0; i <= n; ++i) {
+    row.vertices.push_back(V(4 * (n + 1) + i));
+    if(i < n) row.directions.push_back(Vector_3(1, 0, 0));
+  }
+  layout.add_path(row);
+  std::vector<Layout::Node> ends;
+  for(int i = 0; i <= n; ++i) ends.push_back(layout.closest_node(V(4 * (n + 1) + i), Vector_3(0, 1, 0)));
+  auto col = layout.trace(layout.closest_node(V(4), Vector_3(0, 1, 0)), ends);
+  BOOST_REQUIRE(col);
+  BOOST_TEST(col->vertices.size() == 5u);
+  layout.add_path(*col);
+  const auto s = layout.statistics();
+  BOOST_TEST(s.patches == 3u);
+  BOOST_TEST(s.valid_patches == 3u);
+  BOOST_TEST(s.t_junctions == 1u);
+  const std::size_t upper = layout.patch_id(F(std::size_t(2 * n * (n - 1))));
+  std::size_t max_arcs = 0;
+  for(const auto& side : layout.patches()[upper].sides) max_arcs = (std::max)(max_arcs, side.size());
+  BOOST_TEST(max_arcs == 2u);
+  BOOST_TEST(layout.quality(upper) == Layout::SATISFIED);
+}
+
+BOOST_AUTO_TEST_CASE(fandisk_features_and_tracing)
+{
+  Mesh m;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("fandisk.off"), m));
+  // a stand-in field until the cross field stage lands: the first axis most in each face plane
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(0, 0, 0)).first;
+  for(F f : m.faces()) {
+    const Vector_3 nn = CGAL::Polygon_mesh_processing::compute_face_normal(f, m);
+    const Vector_3 axes[3] = {Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1)};
+    double best = 2.;
+    for(const Vector_3& a : axes) if(std::abs(a * nn) < best) { best = std::abs(a * nn); field[f] = a; }
+  }
+  auto feature = sharp_edges(m);
+  Layout layout(m, field, no_singularity);
+  const std::size_t added = layout.add_feature_paths(feature);
+  BOOST_TEST(added > 0u);
+  // every feature edge is on the boundary of patches, with a patch on both sides
+  std::size_t covered = 0, features = 0;
+  for(E e : m.edges()) if(feature[e]) ++features;
+  for(const Layout::Arc& a : layout.arcs()) covered += a.halfedges.size();
+  BOOST_TEST(covered == features);
+  BOOST_TEST(layout.patches().size() > 1u);
+  for(const Layout::Arc& a : layout.arcs()) BOOST_TEST((a.patches[0] >= 0 && a.patches[1] >= 0));
+
+  // tracing 1000 candidate paths towards the feature lines (speed is printed, not checked)
+  CGAL::Real_timer t;
+  t.start();
+  const auto size = layout.direction_graph_size();
+  const double build = t.time();
+  std::vector<Layout::Node> ends;
+  for(V v : m.vertices())
+    for(int k = 0; k < 4; ++k) {
+      bool on_feature = false;
+      for(auto h : CGAL::halfedges_around_target(v, m)) on_feature = on_feature || feature[m.edge(h)];
+      if(on_feature) ends.push_back(Layout::Node{v, k});
+    }
+  std::size_t traced = 0, tangential = 0;
+  std::vector<Layout::Path> found;
+  for(std::size_t i = 0; i < 1000; ++i) {
+    const V v(std::size_t((i * 7919) % m.number_of_vertices()));
+    auto p = layout.trace(Layout::Node{v, int(i % 4)}, ends);
+    if(!p) continue;
+    ++traced;
+    for(const auto& id : layout.path_ids()) tangential += layout.cross_tangentially(layout.path(id), *p) ? 1 : 0;
+    found.push_back(*p);
+  }
+  t.stop();
+  BOOST_TEST_MESSAGE("fandisk: G " << size.first << " nodes " << size.second << " arcs built in " << build
+                     << " s; 1000 candidates (" << traced << " found) in " << t.time() << " s total");
+  std::cerr << "[layout test] fandisk G: " << size.first << " nodes, " << size.second << " arcs, build " << build
+            << " s; 1000 traces (" << traced << " found): " << t.time() << " s total\n";
+  BOOST_TEST(traced > 500u);
+  // a path ends on a feature but never runs along one
+  BOOST_TEST(tangential == 0u);
+  // consecutive vertices of a traced path are adjacent
+  for(const auto& p : found)
+    for(std::size_t i = 0; i + 1 < p.vertices.size(); ++i) BOOST_TEST(CGAL::edge(p.vertices[i], p.vertices[i + 1], m).second);
+
+  std::ostringstream ply, pl;
+  layout.write_ply(ply);
+  layout.write_polylines(pl);
+  BOOST_TEST(ply.str().find("element face " + std::to_string(m.number_of_faces())) != std::string::npos);
+  const std::string lines = pl.str();
+  BOOST_TEST(std::count(lines.begin(), lines.end(), '\n') == long(added));
+}
+
+BOOST_AUTO_TEST_CASE(bad_input)
+{
+  Mesh m = grid(2);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  Layout layout(m, field, no_singularity);
+  Layout::Path p;
+  p.vertices = {V(0), V(8)};
+  p.directions = {Vector_3(1, 0, 0)};
+  BOOST_CHECK_THROW(layout.add_path(p), std::invalid_argument);
+  BOOST_CHECK_THROW(layout.remove_path(3), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
