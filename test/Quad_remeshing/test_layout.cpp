@@ -158,7 +158,23 @@ BOOST_AUTO_TEST_CASE(partial_feature_line_is_a_u_turn)
   BOOST_TEST(turn.at(1 * 7 + 0) == Layout::STRAIGHT);
   BOOST_TEST(turn.at(0) == Layout::RIGHT_TURN);
   BOOST_TEST(layout.validity(0) == Layout::NOT_CONVEX);
+  // continuing the path from its free end, away from it, is allowed and not tangential; it makes two squares
+  std::vector<Layout::Node> right;
+  for(int j = 0; j <= 6; ++j) right.push_back(layout.closest_node(V(j * 7 + 6), Vector_3(1, 0, 0)));
+  auto extension = layout.trace(layout.closest_node(V(3 * 7 + 3), Vector_3(1, 0, 0)), right);
+  BOOST_REQUIRE(extension);
+  BOOST_TEST(extension->vertices.size() == 4u);
+  BOOST_TEST(!layout.cross_tangentially(p, *extension));
+  // going back along it is refused
+  std::vector<Layout::Node> left;
+  for(int j = 0; j <= 6; ++j) left.push_back(layout.closest_node(V(j * 7), Vector_3(-1, 0, 0)));
+  BOOST_TEST(!layout.trace(layout.closest_node(V(3 * 7 + 3), Vector_3(-1, 0, 0)), left));
+  const std::size_t id2 = layout.add_path(*extension);
+  BOOST_TEST(layout.patches().size() == 2u);
+  BOOST_TEST(layout.statistics().valid_patches == 2u);
+  layout.remove_path(id2);
   layout.remove_path(id);
+  BOOST_TEST(layout.patches().size() == 1u);
   BOOST_TEST(layout.validity(0) == Layout::SATISFIED);
 }
 

@@ -221,6 +221,10 @@ public:
     graph_dirty_ = true;
   }
 
+  // the direction graph refers to the layout's own arrays
+  Patch_layout(const Patch_layout&) = delete;
+  Patch_layout& operator=(const Patch_layout&) = delete;
+
   /// the mesh
   const TriangleMesh& mesh() const { return tm_; }
 
@@ -399,31 +403,32 @@ public:
   }
 
   /*!
-    whether the paths `a` and `b` share an edge, or a vertex where an edge of `a` and an edge of `b` are
-    parallel: their closest directions in the vertex's frame are of the same class (equal or opposite).
-    This is the rule G applies when it blocks nodes at path vertices, so a traced path never crosses the
-    paths of the layout tangentially.
+    whether the paths `a` and `b` cross tangentially: they share an edge, or at a shared vertex an edge of
+    `a` and an edge of `b` leave it in the same field direction (closest direction in the vertex frame), i.e.
+    one runs along the other. A path continuing another one through its end (opposite directions) or
+    crossing it orthogonally is not tangential. G refuses every arc that would make a traced path cross
+    the layout's paths tangentially.
   */
   bool cross_tangentially(const Path& a, const Path& b) const
   {
-    std::map<vertex_descriptor, unsigned> classes; // bit c: a runs along class c at the vertex
+    std::map<vertex_descriptor, unsigned> leaving; // bit d: an edge of a leaves the vertex in direction d
     std::map<std::pair<vertex_descriptor, vertex_descriptor>, char> edges_a;
-    auto cls = [&](vertex_descriptor v, vertex_descriptor w) {
+    auto dir = [&](vertex_descriptor v, vertex_descriptor w) {
       const std::size_t i = vindex_.at(v);
-      return 1u << (internal::closest_direction(vframes_[i], Vector_3(points_[vindex_.at(w)] - points_[i])) % 2);
+      return 1u << internal::closest_direction(vframes_[i], Vector_3(points_[vindex_.at(w)] - points_[i]));
     };
     for(std::size_t i = 0; i + 1 < a.vertices.size(); ++i) {
       const vertex_descriptor x = a.vertices[i], y = a.vertices[i + 1];
       edges_a[std::minmax(x, y)] = 1;
-      classes[x] |= cls(x, y);
-      classes[y] |= cls(y, x);
+      leaving[x] |= dir(x, y);
+      leaving[y] |= dir(y, x);
     }
     for(std::size_t i = 0; i + 1 < b.vertices.size(); ++i) {
       const vertex_descriptor x = b.vertices[i], y = b.vertices[i + 1];
       if(edges_a.count(std::minmax(x, y))) return true;
-      auto cx = classes.find(x), cy = classes.find(y);
-      if(cx != classes.end() && (cx->second & cls(x, y))) return true;
-      if(cy != classes.end() && (cy->second & cls(y, x))) return true;
+      auto lx = leaving.find(x), ly = leaving.find(y);
+      if(lx != leaving.end() && (lx->second & dir(x, y))) return true;
+      if(ly != leaving.end() && (ly->second & dir(y, x))) return true;
     }
     return false;
   }
@@ -510,8 +515,11 @@ private:
   void update_graph()
   {
     if(!graph_dirty_) return;
-    std::vector<std::vector<std::size_t>> blocked(verts_.size());
-    std::vector<unsigned char> mask(verts_.size(), 0);
+    // kept as members: the graph refers to them when it computes the arcs of a start node
+    std::vector<std::vector<std::size_t>>& blocked = graph_blocked_;
+    std::vector<unsigned char>& mask = graph_mask_;
+    blocked.assign(verts_.size(), {});
+    mask.assign(verts_.size(), 0);
     for(std::size_t i = 0; i < edges_.size(); ++i) {
       if(!is_cut(edges_[i])) continue;
       const std::size_t a = vindex_.at(source(edges_[i], tm_)), b = vindex_.at(target(edges_[i], tm_));
@@ -521,7 +529,8 @@ private:
       mask[a] |= (unsigned char)(1u << (internal::closest_direction(vframes_[a], e) % 2));
       mask[b] |= (unsigned char)(1u << (internal::closest_direction(vframes_[b], e) % 2));
     }
-    std::vector<char> excluded(singular_);
+    std::vector<char>& excluded = graph_excluded_;
+    excluded = singular_;
     for(std::size_t i = 0; i < verts_.size(); ++i)
       if(vframes_[i][0] == Vector_3(0, 0, 0)) excluded[i] = 1; // no field there
     graph_.build(vframes_, nbrs_, points_, excluded, blocked, mask, length_weight_);
@@ -749,6 +758,9 @@ private:
   std::vector<Path> paths_;
   std::vector<char> alive_;
   internal::Direction_graph<Vector_3> graph_;
+  std::vector<std::vector<std::size_t>> graph_blocked_;
+  std::vector<unsigned char> graph_mask_;
+  std::vector<char> graph_excluded_;
   bool graph_dirty_ = true;
   bool dirty_ = true;
   std::vector<std::size_t> face_patch_;

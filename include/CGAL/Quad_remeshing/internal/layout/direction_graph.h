@@ -85,6 +85,44 @@ public:
   /// determinism); `points[v]`: its position; `singular[v]`: excluded; `blocked_edges`: set of
   /// (min,max) vertex pairs on paths; `tangent_mask[v]`: bit c set when directions of class c (k mod 2)
   /// are tangential to a path at v.
+  /// an arc along one mesh edge
+  struct Hop { std::size_t to; double drift, advance; };
+
+  /// The arcs leaving node (i, k) along mesh edges. At a start node (`at_start`) the rule at i is relaxed:
+  /// a search may leave a path vertex parallel to a path but away from it (continuing a path through a
+  /// concave corner); it may not leave in the direction of a path edge leaving i. Elsewhere an edge whose
+  /// direction class at i is tangential to a path is refused.
+  std::vector<Hop> direct_hops(std::size_t i, int k, bool at_start) const
+  {
+    std::vector<Hop> out;
+    const auto& frames = *frames_;
+    const auto& mask = *mask_;
+    if((*singular_)[i]) return out;
+    for(std::size_t j : (*nbrs_)[i]) {
+      if((*singular_)[j] || is_blocked(*blocked_, i, j)) continue;
+      const Vector_3 e = positions_[j] - positions_[i];
+      const double el = std::sqrt(CGAL::to_double(e * e));
+      if(el == 0.) continue;
+      const int ei = closest_direction(frames[i], e);
+      if(!at_start && (mask[i] & (1u << (ei % 2)))) continue;
+      if(at_start && leaves_along_path(i, ei)) continue;
+      // an edge parallel to a path at its far end would run along it (same rule as the tangential test)
+      if(mask[j] & (1u << (closest_direction(frames[j], Vector_3(-e)) % 2))) continue;
+      const int m = closest_direction(frames[j], frames[i][k]);
+      if(mask[j] & (1u << (m % 2))) continue;
+      Vector_3 f = frames[i][k] + frames[j][m];
+      const double fl = std::sqrt(CGAL::to_double(f * f));
+      if(fl == 0.) continue;
+      f = f / fl;
+      const double advance = CGAL::to_double(e * f);
+      if(advance <= el * std::cos(CGAL_PI / 4.)) continue; // not within 45 degrees of the field
+      const Vector_3 n = CGAL::cross_product(frames[i][0], frames[i][1]);
+      const double drift = CGAL::to_double(e * CGAL::cross_product(n, f));
+      out.push_back(Hop{4 * j + std::size_t(m), drift, advance});
+    }
+    return out;
+  }
+
   template <typename Point_3>
   void build(const std::vector<std::array<Vector_3, 4>>& frames,
              const std::vector<std::vector<std::size_t>>& nbrs,
@@ -95,38 +133,20 @@ public:
              double length_weight)
   {
     const std::size_t nv = frames.size();
-    g_ = Graph(4 * nv + 1); // the last node is the spare source used for loops
+    g_ = Graph(4 * nv + 1); // the last node is the spare source every search starts from
     frames_ = &frames;
+    nbrs_ = &nbrs;
+    singular_ = &singular;
+    blocked_ = &blocked_neighbours;
+    mask_ = &tangent_mask;
+    length_weight_ = length_weight;
+    positions_.resize(nv);
+    for(std::size_t i = 0; i < nv; ++i) positions_[i] = points[i] - CGAL::ORIGIN;
     // direct arcs, kept per source node for the two-hop pass
-    struct Hop { std::size_t to; double drift, advance; };
     std::vector<std::vector<Hop>> hops(4 * nv);
-    for(std::size_t i = 0; i < nv; ++i) {
-      if(singular[i]) continue;
-      for(std::size_t j : nbrs[i]) {
-        if(singular[j] || is_blocked(blocked_neighbours, i, j)) continue;
-        const Vector_3 e = points[j] - points[i];
-        const double el = std::sqrt(CGAL::to_double(e * e));
-        if(el == 0.) continue;
-        // an edge parallel to a path at either end would run along it (same rule as the tangential test)
-        if((tangent_mask[i] & (1u << (closest_direction(frames[i], e) % 2))) ||
-           (tangent_mask[j] & (1u << (closest_direction(frames[j], Vector_3(-e)) % 2))))
-          continue;
-        for(int k = 0; k < 4; ++k) {
-          if(tangent_mask[i] & (1u << (k % 2))) continue;
-          const int m = closest_direction(frames[j], frames[i][k]);
-          if(tangent_mask[j] & (1u << (m % 2))) continue;
-          Vector_3 f = frames[i][k] + frames[j][m];
-          const double fl = std::sqrt(CGAL::to_double(f * f));
-          if(fl == 0.) continue;
-          f = f / fl;
-          const double advance = CGAL::to_double(e * f);
-          if(advance <= el * std::cos(CGAL_PI / 4.)) continue; // not within 45 degrees of the field
-          const Vector_3 n = CGAL::cross_product(frames[i][0], frames[i][1]);
-          const double drift = CGAL::to_double(e * CGAL::cross_product(n, f));
-          hops[4 * i + k].push_back(Hop{4 * j + std::size_t(m), drift, advance});
-        }
-      }
-    }
+    for(std::size_t i = 0; i < nv; ++i)
+      for(int k = 0; k < 4; ++k)
+        if(!(tangent_mask[i] & (1u << (k % 2)))) hops[4 * i + std::size_t(k)] = direct_hops(i, k, false);
     for(std::size_t u = 0; u < hops.size(); ++u) {
       std::map<std::size_t, Arc> out; // lightest arc per target, ordered: deterministic insertion
       for(const Hop& h : hops[u]) {
@@ -153,14 +173,11 @@ public:
   {
     const std::size_t n = boost::num_vertices(g_);
     const std::size_t spare = n - 1;
-    std::size_t source = start;
-    if(is_end[start]) {
-      // a loop: start from a spare copy of the start node so that the start node itself is a target
-      typename boost::graph_traits<Graph>::out_edge_iterator e, e_end;
-      for(boost::tie(e, e_end) = boost::out_edges(start, g_); e != e_end; ++e)
-        boost::add_edge(spare, boost::target(*e, g_), g_[*e], g_);
-      source = spare;
-    }
+    // the search starts from a spare copy of the start node: the start node itself may then be an end (a loop),
+    // and a start on a path vertex may leave it in a direction parallel to that path (into the patch)
+    const std::size_t source = spare;
+    for(const Hop& h : direct_hops(start / 4, int(start % 4), true))
+      boost::add_edge(spare, h.to, Arc{std::abs(h.drift) + length_weight_ * h.advance, -1}, g_);
     std::vector<std::size_t> pred(n);
     std::vector<double> dist(n, (std::numeric_limits<double>::max)());
     Stop_at_end_visitor<std::vector<char>> vis;
@@ -178,7 +195,7 @@ public:
     } catch(const Dijkstra_end_reached& r) {
       reached = r.node;
     }
-    if(source == spare) boost::clear_out_edges(spare, g_);
+    boost::clear_out_edges(spare, g_);
     if(!reached) return std::nullopt;
 
     std::vector<std::size_t> nodes;
@@ -186,18 +203,19 @@ public:
       nodes.push_back(u);
       if(u == source) break;
     }
-    if(source == spare) nodes.back() = start;
+    nodes.back() = start;
     std::reverse(nodes.begin(), nodes.end());
     Graph_path p;
     p.cost = dist[*reached];
     for(std::size_t i = 0; i < nodes.size(); ++i) {
       if(i > 0) {
-        const std::size_t from = (i == 1 && source == spare) ? spare : nodes[i - 1];
-        // recover the middle node of a two-hop arc (the lightest arc between the two nodes)
+        // recover the middle node of a two-hop arc (the lightest arc between the two nodes); the first step
+        // comes from the spare node and is always a mesh edge
         std::ptrdiff_t middle = -1;
         double best = (std::numeric_limits<double>::max)();
         typename boost::graph_traits<Graph>::out_edge_iterator e, e_end;
-        for(boost::tie(e, e_end) = boost::out_edges(from == spare ? nodes[0] : from, g_); e != e_end; ++e)
+        if(i > 1)
+        for(boost::tie(e, e_end) = boost::out_edges(nodes[i - 1], g_); e != e_end; ++e)
           if(boost::target(*e, g_) == nodes[i] && g_[*e].weight < best) { best = g_[*e].weight; middle = g_[*e].middle; }
         if(middle >= 0) push(p, std::size_t(middle));
       }
@@ -207,6 +225,12 @@ public:
   }
 
 private:
+  bool leaves_along_path(std::size_t i, int dir) const
+  {
+    for(std::size_t b : (*blocked_)[i])
+      if(closest_direction((*frames_)[i], Vector_3(positions_[b] - positions_[i])) == dir) return true;
+    return false;
+  }
   static bool is_blocked(const std::vector<std::vector<std::size_t>>& blocked, std::size_t i, std::size_t j)
   {
     for(std::size_t b : blocked[i]) if(b == j) return true;
@@ -220,6 +244,12 @@ private:
 
   Graph g_;
   const std::vector<std::array<Vector_3, 4>>* frames_ = nullptr;
+  const std::vector<std::vector<std::size_t>>* nbrs_ = nullptr;
+  const std::vector<char>* singular_ = nullptr;
+  const std::vector<std::vector<std::size_t>>* blocked_ = nullptr;
+  const std::vector<unsigned char>* mask_ = nullptr;
+  std::vector<Vector_3> positions_;
+  double length_weight_ = 0.;
 };
 
 } // namespace internal
