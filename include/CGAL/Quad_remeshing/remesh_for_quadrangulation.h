@@ -206,9 +206,12 @@ double quad_edge_length_from_scale(const TriangleMesh& tmesh, double scale,
       \cgalParamDefault{`default_quad_edge_length(tmesh, np)`}
     \cgalParamNEnd
     \cgalParamNBegin{adaptive_remeshing}
-      \cgalParamDescription{if `false`, only the uniform pass (and the final splitting) is done}
+      \cgalParamDescription{if `true`, the adaptive pass runs after the uniform one. Experimental, hence
+                            off by default: with five levels remeshed one call each, the level borders
+                            get split from both sides and, on fandisk, the result has near-degenerate
+                            triangles and a larger distance to the input than the uniform pass alone}
       \cgalParamType{`bool`}
-      \cgalParamDefault{`true`}
+      \cgalParamDefault{`false`}
     \cgalParamNEnd
     \cgalParamNBegin{number_of_iterations}
       \cgalParamDescription{iterations of each isotropic remeshing pass}
@@ -261,7 +264,7 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, tmesh));
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), true);
+  const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5u);
 
   Remeshing_statistics st;
@@ -326,13 +329,25 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   if(adaptive)
   {
     timer.reset();
-    const auto buckets = internal::sizing_buckets<TriangleMesh, decltype(vpm), face_descriptor>(tmesh, vpm);
-    // faces of a bucket are untouched by the calls on the other buckets (their shared borders are
-    // constrained), so the lists stay valid
-    for(std::size_t b = 0; b < buckets.size(); ++b)
+    auto label = get(CGAL::dynamic_face_property_t<int>(), tmesh);
+    internal::sizing_buckets(tmesh, vpm, label);
+    // A level's faces are collected just before its call: the calls on other levels split faces across
+    // their border, and a new face may take the slot (and label) of a removed one. Such a face is simply
+    // left as it is; 0 marks a face that no later call takes.
+    for(std::size_t b = 0; b < internal::sizing_levels().size(); ++b)
     {
-      if(buckets[b].empty() || internal::sizing_levels()[b] == 1.) continue;
-      PMP::isotropic_remeshing(buckets[b], st.target_edge_length * internal::sizing_levels()[b], tmesh, remesh_np);
+      std::vector<face_descriptor> range;
+      for(face_descriptor f : faces(tmesh))
+        if(get(label, f) == int(b + 1)) range.push_back(f);
+      for(face_descriptor f : range) put(label, f, 0);
+      if(range.empty() || internal::sizing_levels()[b] == 1.) continue;
+      // one patch id for all faces: CGAL 5.5 computes the ids of a face range's feature-bounded patches
+      // only inside the range and fails on a border face outside it
+      PMP::isotropic_remeshing(range, st.target_edge_length * internal::sizing_levels()[b], tmesh,
+                               remesh_np.face_patch_map(CGAL::Constant_property_map<face_descriptor, int>(0))
+                                        .collapse_constraints(false));
+      for(face_descriptor f : faces(tmesh))
+        if(get(label, f) <= int(b + 1)) put(label, f, 0);
     }
     st.seconds_adaptive = timer.time();
     if(verbose)

@@ -68,15 +68,15 @@ inline const std::array<double, 5>& sizing_levels()
   return levels;
 }
 
-// Per face: index in sizing_levels() of the multiplier derived from the (vertex-smoothed) radius ratio,
+// Per face: 1 + index in sizing_levels() of the multiplier derived from the (vertex-smoothed) radius ratio,
 // mapped linearly from [10th percentile, max] to [0.3, 3] (the worst 10% clamped to 0.3).
-template <typename TriangleMesh, typename VPM, typename Face>
-std::vector<std::vector<Face>> sizing_buckets(const TriangleMesh& tmesh, const VPM& vpm)
+template <typename TriangleMesh, typename VPM, typename FaceLabelMap>
+void sizing_buckets(const TriangleMesh& tmesh, const VPM& vpm, FaceLabelMap label)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  std::vector<std::vector<Face>> buckets(sizing_levels().size());
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Face;
   std::vector<Face> fs(faces(tmesh).begin(), faces(tmesh).end());
-  if(fs.empty()) return buckets;
+  if(fs.empty()) return;
   auto fq = get(CGAL::dynamic_face_property_t<double>(), tmesh);
   auto vq = get(CGAL::dynamic_vertex_property_t<double>(), tmesh);
   for(Face f : fs)
@@ -115,9 +115,8 @@ std::vector<std::vector<Face>> sizing_buckets(const TriangleMesh& tmesh, const V
     std::size_t best = 0;
     for(std::size_t l = 1; l < levels.size(); ++l)
       if(std::abs(std::log(m / levels[l])) < std::abs(std::log(m / levels[best]))) best = l;
-    buckets[best].push_back(fs[i]);
+    put(label, fs[i], int(best + 1));
   }
-  return buckets;
 }
 
 // Final refinement (paper, Figure 5): a face whose three edges are features gets a centre vertex; then
