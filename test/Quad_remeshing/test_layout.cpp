@@ -2,6 +2,8 @@
 #include "test_support.h"
 
 #include <CGAL/Quad_remeshing/Patch_layout.h>
+#include <CGAL/Quad_remeshing/trace_patch_layout.h>
+#include <CGAL/Quad_remeshing/cross_field.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -317,6 +319,50 @@ BOOST_AUTO_TEST_CASE(fandisk_features_and_tracing)
   BOOST_TEST(ply.str().find("element face " + std::to_string(m.number_of_faces())) != std::string::npos);
   const std::string lines = pl.str();
   BOOST_TEST(std::count(lines.begin(), lines.end(), '\n') == long(added));
+}
+
+BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
+{
+  // a feature line from the left border ending inside: the convexity round continues it to the border
+  Mesh m = grid(6);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  auto feature = m.add_property_map<E, bool>("e:feature", false).first;
+  for(int i = 0; i < 3; ++i) feature[m.edge(m.halfedge(V(3 * 7 + i), V(3 * 7 + i + 1)))] = true;
+  Layout layout(m, field, no_singularity);
+  const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, feature, layout);
+  BOOST_TEST(s.layout.patches == 2u);
+  BOOST_TEST(s.layout.valid_patches == s.layout.patches);
+  BOOST_TEST(s.layout.quality_patches == 2u);
+  BOOST_TEST(s.rounds.size() == 4u);
+  BOOST_TEST(s.rounds[1].name == "convexity");
+  BOOST_TEST(s.rounds[1].paths == 1u);
+  BOOST_TEST(s.report()["rounds"].size() == 4u);
+
+  // the box: the features alone are a valid layout, nothing is added
+  Mesh b = box(3);
+  auto bf = axis_field(b);
+  Layout box_layout(b, bf, no_singularity);
+  const auto bs = CGAL::Quad_remeshing::trace_patch_layout(b, sharp_edges(b), box_layout);
+  BOOST_TEST(bs.layout.patches == 6u);
+  BOOST_TEST(bs.layout.paths == 12u);
+  BOOST_TEST(bs.layout.valid_patches == 6u);
+}
+
+BOOST_AUTO_TEST_CASE(fandisk_rounds_with_cross_field)
+{
+  Mesh m;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("fandisk.off"), m));
+  auto feature = sharp_edges(m);
+  auto field = m.add_property_map<F, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
+  CGAL::Quad_remeshing::compute_cross_field(m, feature, field);
+  Layout layout(m, field, no_singularity);
+  const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, feature, layout);
+  std::cerr << "[layout test] fandisk rounds: " << s.layout.valid_patches << "/" << s.layout.patches << " valid, "
+            << s.layout.quality_patches << " quality, " << s.layout.paths << " paths, " << s.seconds << " s\n";
+  // every feature edge stays on a patch boundary
+  for(E e : m.edges()) if(feature[e]) BOOST_TEST(layout.is_cut(e));
+  BOOST_TEST(s.layout.valid_patches <= s.layout.patches);
+  BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input)
