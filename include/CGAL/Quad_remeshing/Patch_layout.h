@@ -193,7 +193,11 @@ public:
             typename NamedParameters = parameters::Default_named_parameters>
   Patch_layout(const TriangleMesh& tm, FaceFieldMap field, VertexSingularityMap singularities,
                const NamedParameters& np = parameters::default_values())
-    : tm_(tm)
+    : tm_(tm),
+      vindex_{CGAL::get_initialized_vertex_index_map(tm)},
+      findex_{CGAL::get_initialized_face_index_map(tm)},
+      eindex_{CGAL::get_initialized_edge_index_map(tm)},
+      hindex_{CGAL::get_initialized_halfedge_index_map(tm)}
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
@@ -202,12 +206,15 @@ public:
     auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     length_weight_ = choose_parameter(get_parameter(np, internal_np::tracing_length_weight), 0.01);
 
-    for(vertex_descriptor v : vertices(tm)) { vindex_[v] = verts_.size(); verts_.push_back(v); points_.push_back(get(vpm, v)); }
-    for(face_descriptor f : faces(tm)) { findex_[f] = faces_.size(); faces_.push_back(f); }
-    for(edge_descriptor e : edges(tm)) { eindex_[e] = edges_.size(); edges_.push_back(e); }
+    verts_.resize(num_vertices(tm));
+    points_.resize(num_vertices(tm));
+    faces_.resize(num_faces(tm));
+    edges_.resize(num_edges(tm));
+    for(vertex_descriptor v : vertices(tm)) { verts_.at(vindex_[v]) = v; points_[vindex_[v]] = get(vpm, v); }
+    for(face_descriptor f : faces(tm)) faces_.at(findex_[f]) = f;
+    for(edge_descriptor e : edges(tm)) edges_.at(eindex_[e]) = e;
 
-    std::map<face_descriptor, std::size_t> fim(findex_);
-    frames_.build(tm, boost::make_assoc_property_map(fim), vpm, field, gt_);
+    frames_.build(tm, findex_.map, vpm, field, gt_);
     singular_.assign(verts_.size(), 0);
     singularity_index_.assign(verts_.size(), 0);
     for(vertex_descriptor v : vertices(tm)) {
@@ -620,26 +627,29 @@ private:
           if(face_patch_[fj] == std::size_t(-1)) { face_patch_[fj] = pid; stack.push_back(fj); }
         }
       }
-      std::sort(patches_[pid].faces.begin(), patches_[pid].faces.end(),
-                [&](face_descriptor x, face_descriptor y) { return findex_.at(x) < findex_.at(y); });
+      std::vector<std::size_t> ids;
+      for(face_descriptor f : patches_[pid].faces) ids.push_back(findex_[f]);
+      std::sort(ids.begin(), ids.end());
+      for(std::size_t k = 0; k < ids.size(); ++k) patches_[pid].faces[k] = faces_[ids[k]];
     }
     // 2. boundary loops and turns
     std::vector<char> corner(verts_.size(), 0);
-    std::map<halfedge_descriptor, char> visited;
+    std::vector<char> visited(num_halfedges(tm_), 0);
+    std::vector<char> on_loop(verts_.size(), 0), seen(verts_.size(), 0);
     for(Patch& P : patches_) {
-      std::map<vertex_descriptor, char> on_loop;
+      std::vector<std::size_t> touched; // vertices of the patch, to reset the flags
       std::size_t boundary_halfedges = 0;
       for(face_descriptor f : P.faces)
         for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) {
-          if(!is_cut(edge(h, tm_)) || visited.count(h)) continue;
+          if(!is_cut(edge(h, tm_)) || visited[hindex_[h]]) continue;
           std::vector<halfedge_descriptor> loop;
           std::vector<Turn> turns;
           halfedge_descriptor g = h;
           do {
-            visited[g] = 1;
+            visited[hindex_[g]] = 1;
             loop.push_back(g);
             turns.push_back(classify(g));
-            on_loop[target(g, tm_)] = 1;
+            on_loop[vindex_[target(g, tm_)]] = 1;
             g = next_boundary(g);
           } while(g != h && loop.size() <= 3 * faces_.size());
           boundary_halfedges += loop.size();
@@ -647,15 +657,18 @@ private:
           P.turns.push_back(std::move(turns));
         }
       // Euler characteristic of the patch cut open along its boundary: every loop position is a vertex
-      std::map<vertex_descriptor, char> all;
-      for(face_descriptor f : P.faces) for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_)) all[v] = 1;
+      for(face_descriptor f : P.faces)
+        for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_))
+          if(!seen[vindex_[v]]) { seen[vindex_[v]] = 1; touched.push_back(vindex_[v]); }
+      std::sort(touched.begin(), touched.end());
       std::size_t interior = 0;
-      for(const auto& v : all) {
-        if(!on_loop.count(v.first)) {
+      for(std::size_t i : touched) {
+        if(!on_loop[i]) {
           ++interior;
-          if(singular_[vindex_.at(v.first)]) P.singularities.push_back(v.first);
+          if(singular_[i]) P.singularities.push_back(verts_[i]);
         }
       }
+      for(std::size_t i : touched) seen[i] = on_loop[i] = 0;
       const long V = long(interior + boundary_halfedges);
       const long E = long((3 * P.faces.size() - boundary_halfedges) / 2 + boundary_halfedges);
       P.euler_characteristic = int(V - E + long(P.faces.size()));
@@ -746,9 +759,18 @@ private:
   std::vector<face_descriptor> faces_;
   std::vector<edge_descriptor> edges_;
   std::vector<Point_3> points_;
-  std::map<vertex_descriptor, std::size_t> vindex_;
-  std::map<face_descriptor, std::size_t> findex_;
-  std::map<edge_descriptor, std::size_t> eindex_;
+  // O(1) indices of the mesh elements (0 .. n-1)
+  template <typename Map>
+  struct Index
+  {
+    Map map;
+    template <typename Key> std::size_t at(const Key& k) const { return std::size_t(get(map, k)); }
+    template <typename Key> std::size_t operator[](const Key& k) const { return std::size_t(get(map, k)); }
+  };
+  Index<decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()))> vindex_;
+  Index<decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>()))> findex_;
+  Index<decltype(CGAL::get_initialized_edge_index_map(std::declval<const TriangleMesh&>()))> eindex_;
+  Index<decltype(CGAL::get_initialized_halfedge_index_map(std::declval<const TriangleMesh&>()))> hindex_;
   internal::Face_frames<TriangleMesh, GeomTraits> frames_;
   std::vector<std::array<Vector_3, 4>> vframes_;
   std::vector<std::vector<std::size_t>> nbrs_;

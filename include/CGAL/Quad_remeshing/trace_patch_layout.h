@@ -97,7 +97,7 @@ public:
     return false;
   }
 
-  // nodes at every vertex on a path or on the border, except `exclude`
+  // nodes at every vertex on a path or on the border, except `exclude` (a null vertex excludes none)
   std::vector<Node> boundary_ends(vertex_descriptor exclude) const
   {
     std::vector<Node> ends;
@@ -116,6 +116,7 @@ public:
                                   std::size_t max_starts_per_patch, Trace_patch_layout_statistics::Round& round)
   {
     std::size_t kept = 0;
+    std::vector<Node> ends = boundary_ends(typename Layout::vertex_descriptor());
     for(std::size_t p = 0; p < layout_.patches().size(); ++p) {
       const auto condition = only_invalid ? layout_.validity(p) : layout_.quality(p);
       if(condition == Layout::SATISFIED) continue;
@@ -134,11 +135,10 @@ public:
       // patch ids change when a path is kept: the next patch is looked at in the next repetition
       bool accepted = false;
       for(vertex_descriptor v : starts) {
-        const std::vector<Node> ends = boundary_ends(v);
         for(int k = 0; k < 4; ++k) {
           auto c = layout_.trace(Node{v, k}, ends);
           ++round.candidates;
-          if(!c || c->vertices.size() < 2) continue;
+          if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back()) continue;
           // the candidate must start into patch p
           const auto e = edge(c->vertices[0], c->vertices[1], layout_.mesh()).first;
           const auto h = halfedge(e, layout_.mesh());
@@ -147,6 +147,7 @@ public:
         }
         if(accepted) break;
       }
+      if(accepted) ends = boundary_ends(typename Layout::vertex_descriptor());
     }
     round.paths += kept;
     return kept;
