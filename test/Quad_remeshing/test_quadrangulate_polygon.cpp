@@ -247,9 +247,34 @@ BOOST_AUTO_TEST_CASE(invalid_input_throws)
 BOOST_AUTO_TEST_CASE(deterministic)
 {
   const auto a = QR::quadrangulate_polygon(std::vector<int>{5, 2, 7, 3, 1});
-  const auto b = QR::quadrangulate_polygon(std::vector<int>{5, 2, 7, 3, 1});
+  const auto b = QR::quadrangulate_polygon(std::vector<int>{5, 2, 7, 3, 1}, CGAL::parameters::verbose(true));
   BOOST_TEST((a.quads == b.quads));
   BOOST_TEST((a.positions == b.positions));
+}
+
+BOOST_AUTO_TEST_CASE(larger_side_counts_sample)
+{
+  // a deterministic sample with sides up to 40 edges: validity of the embedding beyond the exhaustive range
+  std::size_t failures = 0, cases = 0;
+  unsigned state = 12345u;
+  auto next = [&state](int m) { state = state * 1103515245u + 12345u; return int((state >> 16) % unsigned(m)); };
+  for(int t = 0; t < 600; ++t)
+  {
+    const std::size_t n = 2 + std::size_t(next(5));
+    std::vector<int> e(n);
+    for(int& x : e) x = 1 + next(40);
+    int sum = 0;
+    for(int x : e) sum += x;
+    if(sum % 2 != 0) ++e[0];
+    ++cases;
+    const auto q = QR::quadrangulate_polygon(e);
+    const std::string problem = check_quad_disk(q, e);
+    const bool strategy_ok = (q.strategy == QR::Polygon_quadrangulation::SIMPLE) == brute_force_simple(e);
+    if((!problem.empty() || !strategy_ok) && ++failures <= 10)
+      BOOST_ERROR("case " << to_string(e) << ": " << (problem.empty() ? "strategy mismatch" : problem));
+  }
+  BOOST_TEST(failures == 0u);
+  BOOST_TEST(cases == 600u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
