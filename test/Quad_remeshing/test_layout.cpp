@@ -367,7 +367,7 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
             << s.layout.quality_patches << " quality, " << s.layout.paths << " paths, " << s.seconds << " s\n";
   // every feature edge stays on a patch boundary
   for(E e : m.edges()) if(feature[e]) BOOST_TEST(layout.is_cut(e));
-  BOOST_TEST(s.layout.valid_patches <= s.layout.patches);
+  BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9); // 170/176 with the stand-in field
   BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
 }
 

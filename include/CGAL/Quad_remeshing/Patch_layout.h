@@ -522,6 +522,12 @@ private:
   void update_graph()
   {
     if(!graph_dirty_) return;
+    // G depends on the cut edges only: a path added and removed again (a rejected candidate) leaves it as is
+    std::vector<char> cut(edges_.size());
+    for(std::size_t i = 0; i < edges_.size(); ++i) cut[i] = is_cut(edges_[i]);
+    graph_dirty_ = false;
+    if(cut == graph_cut_) return;
+    graph_cut_.swap(cut);
     // kept as members: the graph refers to them when it computes the arcs of a start node
     std::vector<std::vector<std::size_t>>& blocked = graph_blocked_;
     std::vector<unsigned char>& mask = graph_mask_;
@@ -541,7 +547,6 @@ private:
     for(std::size_t i = 0; i < verts_.size(); ++i)
       if(vframes_[i][0] == Vector_3(0, 0, 0)) excluded[i] = 1; // no field there
     graph_.build(vframes_, nbrs_, points_, excluded, blocked, mask, length_weight_);
-    graph_dirty_ = false;
   }
 
   // the next boundary halfedge of the loop after `h`, turning around target(h) inside the patch
@@ -783,6 +788,7 @@ private:
   std::vector<std::vector<std::size_t>> graph_blocked_;
   std::vector<unsigned char> graph_mask_;
   std::vector<char> graph_excluded_;
+  std::vector<char> graph_cut_; // the cut edges G was built for
   bool graph_dirty_ = true;
   bool dirty_ = true;
   std::vector<std::size_t> face_patch_;
