@@ -1,0 +1,141 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_QUAD_REMESHING_INTERNAL_QUANTIZATION_MIP_MODEL_H
+#define CGAL_QUAD_REMESHING_INTERNAL_QUANTIZATION_MIP_MODEL_H
+
+#include <CGAL/Quad_remeshing/internal/quantization/problem_helpers.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+struct Quantization_weights { double isometry = 1, regularity_quads = 99, regularity_others = 91; };
+
+struct Cluster_result
+{
+  std::size_t variables = 0, constraints = 0;
+  int status = -1; // a Mip_status value, or -1 when no solver ran
+  bool solved = false;
+};
+
+// The integer window [lo, hi] of an arc around its target. Inside it the convex squared deviation is
+// represented exactly at integers by the secants through consecutive integers; the window is wide
+// enough (at least 3 on each side) for parity and regularity moves.
+inline void arc_window(double t, int& lo, int& hi)
+{
+  const int r = (std::max)(3, static_cast<int>(std::ceil(0.5 * t)));
+  lo = (std::max)(1, static_cast<int>(std::floor(t)) - r);
+  hi = static_cast<int>(std::ceil(t)) + r;
+}
+
+// Builds and solves the program of one cluster (its patches; arcs not in the cluster are fixed in
+// v.fixed) and writes the values of its free arcs into s. The traits object is used once.
+template <typename MIP>
+Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::size_t>& patches,
+                             const Quantization_weights& w, double time_limit, double gap,
+                             std::vector<int>& s, MIP& mip)
+{
+  typedef typename MIP::Variable Variable;
+  typedef typename MIP::Linear_constraint Constraint;
+  typedef typename MIP::Linear_objective Objective;
+  const Side_quantization_problem& pb = *v.problem;
+  Cluster_result res;
+  mip.set_time_limit(time_limit);
+  mip.set_relative_gap(gap);
+  Objective* obj = mip.create_objective(Objective::MINIMIZE);
+
+  // Arcs in ascending id order: deterministic variable numbering.
+  std::map<std::size_t, Variable*> var;
+  for(std::size_t p : patches)
+    for(std::size_t a : v.patch_arcs[p])
+      if(v.fixed[a] == 0) var.emplace(a, nullptr);
+  for(auto& kv : var) {
+    const double t = pb.arcs[kv.first].target;
+    int lo, hi; arc_window(t, lo, hi);
+    kv.second = mip.create_variable(Variable::INTEGER, lo, hi);
+    Variable* epi = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
+    obj->add_coefficient(epi, w.isometry);
+    for(int j = lo; j < hi; ++j) {
+      // epi >= f(j) + m (s - j), m = f(j+1) - f(j), f(x) = (x - t)^2
+      const double fj = (j - t) * (j - t), m = 2. * (j - t) + 1.;
+      Constraint* c = mip.create_constraint(fj - m * j, Variable::infinity());
+      c->add_coefficient(epi, 1.);
+      c->add_coefficient(kv.second, -m);
+    }
+  }
+  // e_i = sum of arcs of side i: a linear form (variable part + constant part).
+  auto add_side = [&](Constraint* c, std::size_t p, std::size_t i, double sign, double& constant) {
+    for(std::size_t a : pb.patches[p][i]) {
+      if(v.fixed[a] > 0) constant += sign * v.fixed[a];
+      else c->add_coefficient(var[a], sign); // accumulates
+    }
+  };
+  for(std::size_t p : patches) {
+    const std::size_t n = pb.patches[p].size();
+    // Parity: perimeter = 2 k, k >= 2.
+    {
+      Variable* k = mip.create_variable(Variable::INTEGER, 2, Variable::infinity());
+      Constraint* c = mip.create_constraint(0, 0);
+      double constant = 0;
+      for(std::size_t i = 0; i < n; ++i) add_side(c, p, i, 1., constant);
+      c->add_coefficient(k, -2.);
+      c->set_bounds(-constant, -constant);
+    }
+    if(n == 4) {
+      for(std::size_t i = 0; i < 2; ++i) {
+        // d >= |e_i - e_{i+2}| through two rows
+        Variable* d = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
+        obj->add_coefficient(d, w.regularity_quads);
+        for(double sign : {1., -1.}) {
+          Constraint* c = mip.create_constraint(0, Variable::infinity());
+          double constant = 0;
+          c->add_coefficient(d, 1.);
+          add_side(c, p, i, -sign, constant);
+          add_side(c, p, i + 2, sign, constant);
+          c->set_bounds(-constant, Variable::infinity());
+        }
+      }
+    } else {
+      // Tarini's inequalities  sum r_j e_j + slack >= 2, slack weighted per patch (1/n).
+      for(const auto& r : tarini_rows(n)) {
+        Variable* sl = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
+        obj->add_coefficient(sl, w.regularity_others / double(n));
+        Constraint* c = mip.create_constraint(2, Variable::infinity());
+        double constant = 0;
+        for(std::size_t i = 0; i < n; ++i) if(r[i] != 0) add_side(c, p, i, double(r[i]), constant);
+        c->add_coefficient(sl, 1.);
+        c->set_bounds(2. - constant, Variable::infinity());
+      }
+      if(n == 6) {
+        // Soft hexagon parity: e0 + e2 + e4 = 2 h + odd, odd in {0, 1} penalised.
+        Variable* h = mip.create_variable(Variable::INTEGER, 0, Variable::infinity());
+        Variable* odd = mip.create_variable(Variable::BINARY, 0, 1);
+        obj->add_coefficient(odd, w.regularity_others / double(n));
+        Constraint* c = mip.create_constraint(0, 0);
+        double constant = 0;
+        for(std::size_t i : {0, 2, 4}) add_side(c, p, i, 1., constant);
+        c->add_coefficient(h, -2.);
+        c->add_coefficient(odd, -1.);
+        c->set_bounds(-constant, -constant);
+      }
+    }
+  }
+  res.variables = mip.number_of_variables();
+  res.constraints = mip.number_of_constraints();
+  res.solved = mip.solve();
+  res.status = static_cast<int>(mip.status());
+  if(res.solved)
+    for(const auto& kv : var) s[kv.first] = static_cast<int>(std::lround(kv.second->solution_value()));
+  return res;
+}
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif

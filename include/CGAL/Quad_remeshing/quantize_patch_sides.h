@@ -1,0 +1,333 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_QUAD_REMESHING_QUANTIZE_PATCH_SIDES_H
+#define CGAL_QUAD_REMESHING_QUANTIZE_PATCH_SIDES_H
+
+#include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/GLPK_mixed_integer_program_traits_with_limits.h>
+#include <CGAL/Quad_remeshing/internal/quantization/problem_helpers.h>
+#include <CGAL/Quad_remeshing/internal/quantization/fallback.h>
+#include <CGAL/Quad_remeshing/internal/quantization/mip_model.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <exception>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(isometry_weight_t, isometry_weight, isometry_weight)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(quad_regularity_weight_t, quad_regularity_weight, quad_regularity_weight)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(polygon_regularity_weight_t, polygon_regularity_weight, polygon_regularity_weight)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(maximum_cluster_size_t, maximum_cluster_size, maximum_cluster_size)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(relative_mip_gap_t, relative_mip_gap, relative_mip_gap)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(use_mip_solver_t, use_mip_solver, use_mip_solver)
+
+namespace CGAL {
+namespace Quad_remeshing {
+
+/// \ingroup PkgQuadRemeshingRef
+/// The figures of one `quantize_patch_sides()` run.
+struct Side_quantization_statistics
+{
+  std::size_t clusters = 0;            ///< number of clusters solved separately
+  std::size_t variables = 0;           ///< program variables, summed over clusters
+  std::size_t constraints = 0;         ///< program constraints, summed over clusters
+  double isometry = 0;                 ///< sum over arcs of (s - target)^2
+  double quad_regularity = 0;          ///< sum over quads of |e0 - e2| + |e1 - e3|
+  double polygon_regularity = 0;       ///< sum over 3/5/6-gons of the violations of Tarini's inequalities / n (+ hexagon parity)
+  double objective = 0;                ///< weighted total of the three terms above
+  std::vector<std::string> status;     ///< per cluster: optimal, feasible_at_limit, ..., or "fallback"
+  std::size_t fallback_clusters = 0;   ///< clusters whose values come from the solver-free fallback
+  std::size_t simple_patches = 0;      ///< patches admitting Tarini's simple (one-singularity) pattern
+  std::size_t odd_perimeters = 0;      ///< patches with an odd perimeter (always 0 on return)
+  double seconds = 0;                  ///< wall-clock time
+
+  /// The figures as a `Report` record.
+  Report report() const
+  {
+    Report r = Report::object();
+    r["clusters"] = clusters;
+    r["variables"] = variables;
+    r["constraints"] = constraints;
+    Report o = Report::object();
+    o["isometry"] = isometry;
+    o["quad_regularity"] = quad_regularity;
+    o["polygon_regularity"] = polygon_regularity;
+    o["total"] = objective;
+    r["objective"] = o;
+    Report st = Report::array();
+    for(const auto& s : status) st.push_back(s);
+    r["status"] = st;
+    r["fallback_clusters"] = fallback_clusters;
+    r["simple_patches"] = simple_patches;
+    r["odd_perimeters"] = odd_perimeters;
+    r["seconds"] = seconds;
+    return r;
+  }
+};
+
+namespace internal {
+// Stands for "no solver available": only the fallback runs.
+struct No_mip_traits {};
+} // namespace internal
+
+/// \ingroup PkgQuadRemeshingRef
+/// The traits used by `quantize_patch_sides()` by default.
+#if defined(CGAL_USE_GLPK) || defined(DOXYGEN_RUNNING)
+typedef GLPK_mixed_integer_program_traits_with_limits<double> Default_mip_traits;
+#else
+typedef internal::No_mip_traits Default_mip_traits;
+#endif
+
+namespace internal {
+
+// Connected clusters of at most max_size patches: breadth-first growth in ascending patch order.
+inline std::vector<std::vector<std::size_t> > make_clusters(const Quantization_view& v, std::size_t max_size)
+{
+  const std::size_t np = v.problem->patches.size();
+  std::vector<long> cluster_of(np, -1);
+  std::vector<std::vector<std::size_t> > clusters;
+  for(std::size_t seed = 0; seed < np; ++seed) {
+    if(cluster_of[seed] >= 0) continue;
+    clusters.emplace_back();
+    auto& c = clusters.back();
+    std::deque<std::size_t> queue{seed};
+    cluster_of[seed] = long(clusters.size() - 1);
+    while(!queue.empty() && c.size() < max_size) {
+      const std::size_t p = queue.front(); queue.pop_front();
+      c.push_back(p);
+      for(std::size_t a : v.patch_arcs[p])
+        for(std::size_t q : v.arc_patches[a])
+          if(cluster_of[q] < 0) { cluster_of[q] = cluster_of[seed]; queue.push_back(q); }
+    }
+    for(std::size_t q : queue) cluster_of[q] = -1; // not reached before the cap: later clusters
+    std::sort(c.begin(), c.end());
+  }
+  return clusters;
+}
+
+inline void evaluate(const Quantization_view& v, const std::vector<int>& s, const Quantization_weights& w,
+                     Side_quantization_statistics& st)
+{
+  const auto& pb = *v.problem;
+  st.isometry = st.quad_regularity = st.polygon_regularity = 0;
+  st.simple_patches = st.odd_perimeters = 0;
+  for(std::size_t a = 0; a < pb.arcs.size(); ++a) {
+    if(v.problem->arcs[a].fixed > 0 || v.arc_patches[a].empty()) continue;
+    const double d = s[a] - pb.arcs[a].target;
+    st.isometry += d * d;
+  }
+  for(std::size_t p = 0; p < pb.patches.size(); ++p) {
+    const std::size_t n = pb.patches[p].size();
+    std::vector<int> e(n);
+    for(std::size_t i = 0; i < n; ++i) e[i] = side_count(v, p, i, s);
+    if(perimeter(v, p, s) % 2 != 0) ++st.odd_perimeters;
+    if(is_simple_patch(v, p, s)) ++st.simple_patches;
+    if(n == 4) st.quad_regularity += std::abs(e[0] - e[2]) + std::abs(e[1] - e[3]);
+    else {
+      double viol = 0;
+      for(const auto& r : tarini_rows(n)) {
+        int x = 0;
+        for(std::size_t i = 0; i < n; ++i) x += r[i] * e[i];
+        viol += (std::max)(0, 2 - x);
+      }
+      if(n == 6 && (e[0] + e[2] + e[4]) % 2 != 0) viol += 1;
+      st.polygon_regularity += viol / double(n);
+    }
+  }
+  st.objective = w.isometry * st.isometry + w.regularity_quads * st.quad_regularity +
+                 w.regularity_others * st.polygon_regularity;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+
+  \brief computes the number of quad edges of every arc of a patch layout (paper, Section 6.1).
+
+  Solves, per cluster of patches, the mixed-integer program: one integer `s >= 1` per arc; every
+  patch perimeter even and at least 4 (hard); minimise
+  `w_iso * sum (s - target)^2` (exact at integers through secant cuts, within a window of at least
+  3 around the target)
+  `+ w_quad * sum_quads (|e0 - e2| + |e1 - e3|)`
+  `+ w_poly * sum_{3,5,6-gons} (1/n) sum_i max(0, 2 - L_i(e))` where `L_i(e) >= 2` are Tarini's
+  inequalities (every separatrix at least one edge; paper Eq. 1), plus, for hexagons, a penalty when
+  `e0 + e2 + e4` is odd. Arcs between clusters are first fixed to the even number nearest to their
+  target. A cluster whose solve ends with no trusted solution (time limit before any incumbent,
+  solver error, no GLPK) takes its values from a solver-free fallback: rounding, then parity repair
+  by `+-1` along shortest paths of the patch adjacency graph between odd patches (or to the
+  boundary). The result always has every `s >= 1` and every perimeter even and `>= 4`.
+
+  Singularity alignment (the paper's fourth term) is not modelled yet.
+
+  @tparam MIPTraits a model of `MixedIntegerProgramTraitsWithLimits`, default-constructible;
+          `GLPK_mixed_integer_program_traits_with_limits<double>` when `CGAL_USE_GLPK` is defined,
+          otherwise `internal::No_mip_traits` (fallback only).
+  @tparam NamedParameters a sequence of named parameters
+
+  @param problem the arcs and patches
+  @param arc_edge_counts output: resized to `problem.arcs.size()`, the edge count of every arc
+  @param np optional named parameters among the ones listed below
+
+  @pre every patch has 3 to 6 non-empty sides; arc ids are valid; every arc bounds at most two
+       patch sides; targets are in `(0, 1e6]`. Violations throw `std::invalid_argument`, as do fixed
+       arc values that make even perimeters impossible.
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{isometry_weight}
+      \cgalParamDescription{weight of the squared deviation from the targets}
+      \cgalParamType{`double`}
+      \cgalParamDefault{1}
+    \cgalParamNEnd
+    \cgalParamNBegin{quad_regularity_weight}
+      \cgalParamDescription{weight of the opposite-side differences of 4-sided patches}
+      \cgalParamType{`double`}
+      \cgalParamDefault{99}
+    \cgalParamNEnd
+    \cgalParamNBegin{polygon_regularity_weight}
+      \cgalParamDescription{weight of the violations of Tarini's conditions on 3, 5 and 6-sided patches}
+      \cgalParamType{`double`}
+      \cgalParamDefault{91}
+    \cgalParamNEnd
+    \cgalParamNBegin{maximum_cluster_size}
+      \cgalParamDescription{maximal number of patches solved in one program}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{300}
+    \cgalParamNEnd
+    \cgalParamNBegin{maximum_running_time}
+      \cgalParamDescription{time limit in seconds of each cluster's solve (<= 0: none)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{10}
+    \cgalParamNEnd
+    \cgalParamNBegin{relative_mip_gap}
+      \cgalParamDescription{relative gap at which a solve stops as optimal}
+      \cgalParamType{`double`}
+      \cgalParamDefault{1e-4}
+    \cgalParamNEnd
+    \cgalParamNBegin{use_mip_solver}
+      \cgalParamDescription{if `false`, only the solver-free fallback runs}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true` if `CGAL_USE_GLPK` is defined or `MIPTraits` is given}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_threads}
+      \cgalParamDescription{clusters solved in parallel; the result does not depend on it}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{1}
+    \cgalParamNEnd
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{prints progress to `std::cerr` with the prefix `[quantization]`}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  @return the statistics of the run.
+*/
+template <typename MIPTraits = Default_mip_traits, typename NamedParameters = parameters::Default_named_parameters>
+Side_quantization_statistics
+quantize_patch_sides(const Side_quantization_problem& problem,
+                     std::vector<int>& arc_edge_counts,
+                     const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto t0 = std::chrono::steady_clock::now();
+
+  internal::Quantization_weights w;
+  w.isometry = choose_parameter(get_parameter(np, internal_np::isometry_weight), 1.);
+  w.regularity_quads = choose_parameter(get_parameter(np, internal_np::quad_regularity_weight), 99.);
+  w.regularity_others = choose_parameter(get_parameter(np, internal_np::polygon_regularity_weight), 91.);
+  const std::size_t max_cluster = choose_parameter(get_parameter(np, internal_np::maximum_cluster_size), std::size_t(300));
+  const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 10.);
+  const double gap = choose_parameter(get_parameter(np, internal_np::relative_mip_gap), 1e-4);
+  const bool use_solver = choose_parameter(get_parameter(np, internal_np::use_mip_solver), true);
+  const unsigned threads = (std::max)(1u, static_cast<unsigned>(
+                             choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u)));
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  if(!(w.isometry >= 0) || !(w.regularity_quads >= 0) || !(w.regularity_others >= 0))
+    throw std::invalid_argument("quantize_patch_sides: weights must be >= 0");
+  if(max_cluster == 0) throw std::invalid_argument("quantize_patch_sides: maximum_cluster_size must be > 0");
+
+  internal::Quantization_view v = internal::make_view(problem);
+  Side_quantization_statistics st;
+  std::vector<int>& s = arc_edge_counts;
+  s.assign(problem.arcs.size(), 1);
+
+  const auto clusters = internal::make_clusters(v, max_cluster);
+  st.clusters = clusters.size();
+  if(clusters.size() > 1) {
+    std::vector<long> cluster_of(problem.patches.size());
+    for(std::size_t c = 0; c < clusters.size(); ++c) for(std::size_t p : clusters[c]) cluster_of[p] = long(c);
+    // Even values on arcs between clusters keep each cluster's parity problem independent and solvable.
+    for(std::size_t a = 0; a < problem.arcs.size(); ++a) {
+      const auto& inc = v.arc_patches[a];
+      if(v.fixed[a] == 0 && inc.size() == 2 && cluster_of[inc[0]] != cluster_of[inc[1]])
+        v.fixed[a] = (std::max)(2, 2 * static_cast<int>(std::lround(problem.arcs[a].target / 2.)));
+    }
+  }
+  // The fallback gives every arc a value first; a successful solve overwrites its cluster's free arcs.
+  internal::fallback_assignment(v, s);
+
+  std::vector<internal::Cluster_result> results(clusters.size());
+  if constexpr(!std::is_same<MIPTraits, internal::No_mip_traits>::value) if(use_solver) {
+    std::vector<std::vector<int> > local(clusters.size());
+    std::atomic<std::size_t> next(0);
+    std::exception_ptr failure;
+    auto work = [&]() {
+      for(std::size_t c; (c = next++) < clusters.size();) {
+        try {
+          MIPTraits mip;
+          local[c] = s;
+          results[c] = internal::solve_cluster(v, clusters[c], w, time_limit, gap, local[c], mip);
+        } catch(...) { results[c] = internal::Cluster_result(); }
+      }
+    };
+    if(threads == 1 || clusters.size() == 1) work();
+    else {
+      std::vector<std::thread> pool;
+      for(unsigned i = 0; i < (std::min<std::size_t>)(threads, clusters.size()); ++i) pool.emplace_back(work);
+      for(auto& t : pool) t.join();
+    }
+    // Clusters share no free arc, so the merge order does not matter.
+    for(std::size_t c = 0; c < clusters.size(); ++c) {
+      if(!results[c].solved) continue;
+      for(std::size_t p : clusters[c])
+        for(std::size_t a : v.patch_arcs[p]) if(v.fixed[a] == 0) s[a] = local[c][a];
+    }
+  }
+  for(std::size_t c = 0; c < clusters.size(); ++c) {
+    st.variables += results[c].variables;
+    st.constraints += results[c].constraints;
+    if(results[c].solved) st.status.push_back(to_string(Mip_status(results[c].status)));
+    else {
+      ++st.fallback_clusters;
+      st.status.push_back(results[c].status < 0 ? std::string("fallback")
+                                                : std::string("fallback (") + to_string(Mip_status(results[c].status)) + ")");
+    }
+  }
+  internal::evaluate(v, s, w, st);
+  if(st.odd_perimeters != 0) throw std::logic_error("quantize_patch_sides: odd perimeter left (bug)");
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if(verbose)
+    std::cerr << "[quantization] " << st.clusters << " clusters, " << st.variables << " variables, "
+              << st.fallback_clusters << " fallback, objective " << st.objective << ", "
+              << st.seconds << " s\n";
+  return st;
+}
+
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_QUANTIZE_PATCH_SIDES_H

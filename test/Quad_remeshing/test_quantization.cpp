@@ -1,0 +1,250 @@
+// Side quantization: known optima, brute force on small problems, parity on generated layouts,
+// the fallback alone, clusters, threads, time limit, bad input.
+#include <CGAL/Quad_remeshing/quantize_patch_sides.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <random>
+
+namespace {
+
+namespace QR = CGAL::Quad_remeshing;
+namespace P = CGAL::Quad_remeshing::parameters;
+using QR::Side_quantization_problem;
+typedef std::vector<std::size_t> Side;
+
+// A grid of nx x ny cells; arcs: horizontal h(i,j) (i in [0,nx), j in [0,ny]) and vertical v(i,j)
+// (i in [0,nx], j in [0,ny)). Some horizontally adjacent cell pairs are merged into one patch with
+// T-junctions on its top and bottom sides; some merged pairs become pentagons (bottom side split at
+// the T-junction), some single cells become triangles (left and top sides joined).
+Side_quantization_problem make_grid(int nx, int ny, std::mt19937& rng, bool fractional,
+                                   double merge_prob = 0.2, double odd_prob = 0.1)
+{
+  Side_quantization_problem pb;
+  std::uniform_real_distribution<double> len(1.0, 8.0);
+  std::uniform_real_distribution<double> u(0., 1.);
+  std::vector<double> wx(nx), wy(ny);
+  for(auto& x : wx) x = fractional ? len(rng) : std::round(len(rng));
+  for(auto& y : wy) y = fractional ? len(rng) : std::round(len(rng));
+  auto h = [&](int i, int j) { return std::size_t(j * nx + i); };
+  auto v = [&](int i, int j) { return std::size_t((ny + 1) * nx + j * (nx + 1) + i); };
+  pb.arcs.resize(std::size_t((ny + 1) * nx + ny * (nx + 1)));
+  for(int j = 0; j <= ny; ++j) for(int i = 0; i < nx; ++i) pb.arcs[h(i, j)].target = wx[i];
+  for(int j = 0; j < ny; ++j) for(int i = 0; i <= nx; ++i) pb.arcs[v(i, j)].target = wy[j];
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i) {
+      if(i + 1 < nx && u(rng) < merge_prob) {
+        std::vector<Side> sides{{h(i, j), h(i + 1, j)}, {v(i + 2, j)}, {h(i + 1, j + 1), h(i, j + 1)}, {v(i, j)}};
+        if(u(rng) < odd_prob * 2) sides = {{h(i, j)}, {h(i + 1, j)}, {v(i + 2, j)}, {h(i + 1, j + 1), h(i, j + 1)}, {v(i, j)}};
+        pb.patches.push_back(sides);
+        ++i;
+      } else if(u(rng) < odd_prob) {
+        pb.patches.push_back({{h(i, j)}, {v(i + 1, j)}, {h(i, j + 1), v(i, j)}});
+      } else {
+        pb.patches.push_back({{h(i, j)}, {v(i + 1, j)}, {h(i, j + 1)}, {v(i, j)}});
+      }
+    }
+  return pb;
+}
+
+std::size_t odd_or_small(const Side_quantization_problem& pb, const std::vector<int>& s)
+{
+  std::size_t bad = 0;
+  for(int x : s) if(x < 1) ++bad;
+  for(const auto& p : pb.patches) {
+    long per = 0;
+    for(const auto& side : p) for(std::size_t a : side) per += s[a];
+    if(per % 2 != 0 || per < 4) ++bad;
+  }
+  return bad;
+}
+
+// Arcs bounding no patch (a merged cell's inner edge) are not part of the program.
+std::vector<bool> used_arcs(const Side_quantization_problem& pb)
+{
+  std::vector<bool> used(pb.arcs.size(), false);
+  for(const auto& p : pb.patches) for(const auto& side : p) for(std::size_t a : side) used[a] = true;
+  return used;
+}
+
+// The model's objective evaluated independently (squared deviation, quads |e0-e2|+|e1-e3|, Tarini).
+double objective(const Side_quantization_problem& pb, const std::vector<int>& s)
+{
+  double iso = 0, quad = 0, poly = 0;
+  const auto used = used_arcs(pb);
+  for(std::size_t a = 0; a < pb.arcs.size(); ++a) if(used[a]) iso += (s[a] - pb.arcs[a].target) * (s[a] - pb.arcs[a].target);
+  for(const auto& p : pb.patches) {
+    const int n = int(p.size());
+    std::vector<int> e(n, 0);
+    for(int i = 0; i < n; ++i) for(std::size_t a : p[i]) e[i] += s[a];
+    auto E = [&](int k) { return e[((k % n) + n) % n]; };
+    if(n == 4) { quad += std::abs(e[0] - e[2]) + std::abs(e[1] - e[3]); continue; }
+    double viol = 0;
+    for(int i = 0; i < n; ++i) {
+      int two_s = 0;
+      if(n == 3) two_s = E(i - 1) + E(i + 1) - E(i);
+      if(n == 5) two_s = E(i - 1) + E(i) + E(i + 1) - E(i + 2) - E(i - 2);
+      if(n == 6) two_s = E(i - 1) + E(i + 1) - E(i + 3);
+      viol += std::max(0, 2 - two_s);
+    }
+    if(n == 6 && (e[0] + e[2] + e[4]) % 2) viol += 1;
+    poly += viol / n;
+  }
+  return iso + 99 * quad + 91 * poly;
+}
+
+double brute_force(const Side_quantization_problem& pb)
+{
+  const std::size_t na = pb.arcs.size();
+  std::vector<int> s(na), lo(na), hi(na);
+  const auto used = used_arcs(pb);
+  for(std::size_t a = 0; a < na; ++a) {
+    QR::internal::arc_window(pb.arcs[a].target, lo[a], hi[a]);
+    if(!used[a]) hi[a] = lo[a];
+  }
+  double best = 1e300;
+  std::function<void(std::size_t)> rec = [&](std::size_t a) {
+    if(a == na) { if(odd_or_small(pb, s) == 0) best = std::min(best, objective(pb, s)); return; }
+    for(int x = lo[a]; x <= hi[a]; ++x) { s[a] = x; rec(a + 1); }
+  };
+  rec(0);
+  return best;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(quantization)
+
+BOOST_AUTO_TEST_CASE(regular_grid_integer_targets_is_exact)
+{
+  std::mt19937 rng(1);
+  const auto pb = make_grid(12, 10, rng, false, 0., 0.);
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  for(std::size_t a = 0; a < pb.arcs.size(); ++a) BOOST_CHECK_EQUAL(s[a], int(pb.arcs[a].target));
+  BOOST_CHECK_SMALL(st.objective, 1e-9);
+  BOOST_CHECK_EQUAL(st.simple_patches, pb.patches.size());
+  BOOST_CHECK_EQUAL(st.status.at(0), "optimal");
+}
+
+BOOST_AUTO_TEST_CASE(triangle_forces_irregular_vertex)
+{
+  // One triangle with targets 3,3,3: odd perimeter; the optimum moves one arc by one (cost 1).
+  Side_quantization_problem pb;
+  pb.arcs = {{3.}, {3.}, {3.}};
+  pb.patches = {{{0}, {1}, {2}}};
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_CHECK_CLOSE(st.objective, 1., 1e-6);
+  BOOST_CHECK_EQUAL(st.simple_patches, 1u);
+  // A ring of four quads around a triangle-free hole would be regular; a pentagon among quads:
+  Side_quantization_problem pent;
+  pent.arcs = {{2.}, {2.}, {2.}, {2.}, {2.}};
+  pent.patches = {{{0}, {1}, {2}, {3}, {4}}};
+  QR::quantize_patch_sides(pent, s);
+  BOOST_CHECK_EQUAL(odd_or_small(pent, s), 0u);
+  BOOST_CHECK_CLOSE(objective(pent, s), brute_force(pent), 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(t_junction_case)
+{
+  // Left: two quads A (bottom) and C (top) of height 2 and 3; right: quad B whose left side is the
+  // two arcs shared with A and C (a T-junction). Targets are consistent: optimum 0.
+  // arcs: 0 A.bottom, 1 A|B, 2 A.top=C.bottom, 3 A.left, 4 C|B, 5 C.top, 6 C.left, 7 B.bottom, 8 B.right, 9 B.top
+  Side_quantization_problem pb;
+  pb.arcs = {{4.}, {2.}, {4.}, {2.}, {3.}, {4.}, {3.}, {5.}, {5.}, {5.}};
+  pb.patches = {{{0}, {1}, {2}, {3}}, {{2}, {4}, {5}, {6}}, {{7}, {8}, {9}, {4, 1}}};
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK_SMALL(st.objective, 1e-9);
+  // Make the T-junction inconsistent: B.right wants 4.6: the optimum is a trade-off, checked by brute force.
+  pb.arcs[8].target = 4.6;
+  pb.arcs[4].target = 2.6;
+  QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_CHECK_CLOSE(objective(pb, s), brute_force(pb), 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(small_random_problems_match_brute_force)
+{
+  std::mt19937 rng(7);
+  int checked = 0;
+  for(int k = 0; k < 40 && checked < 12; ++k) {
+    auto pb = make_grid(2, 1, rng, true, 0.5, 0.4);
+    if(pb.arcs.size() > 7) continue;
+    std::vector<int> s;
+    const auto st = QR::quantize_patch_sides(pb, s);
+    BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+    BOOST_CHECK_CLOSE(st.objective, objective(pb, s), 1e-6);
+    BOOST_CHECK_CLOSE(st.objective + 1., brute_force(pb) + 1., 1e-6);
+    ++checked;
+  }
+  BOOST_CHECK_GE(checked, 5);
+}
+
+BOOST_AUTO_TEST_CASE(parity_on_generated_layouts_solver_fallback_threads)
+{
+  std::mt19937 rng(11);
+  for(int sz : {12, 20}) {
+    const auto pb = make_grid(sz, sz, rng, true);
+    std::vector<int> s1, s2, sf;
+    auto t = std::chrono::steady_clock::now();
+    const auto st1 = QR::quantize_patch_sides(pb, s1, P::combine(P::maximum_cluster_size(100), P::maximum_running_time(5.)));
+    const double t_glpk = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    const auto st2 = QR::quantize_patch_sides(pb, s2, P::combine(P::maximum_cluster_size(100), P::maximum_running_time(5.), P::number_of_threads(2)));
+    t = std::chrono::steady_clock::now();
+    const auto stf = QR::quantize_patch_sides(pb, sf, QR::parameters::use_mip_solver(false));
+    const double t_fb = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    BOOST_CHECK_EQUAL(odd_or_small(pb, s1), 0u);
+    BOOST_CHECK_EQUAL(odd_or_small(pb, sf), 0u);
+    BOOST_CHECK(s1 == s2 || st1.fallback_clusters + st2.fallback_clusters > 0);
+    BOOST_CHECK_EQUAL(st1.odd_perimeters, 0u);
+    BOOST_CHECK_GT(st1.clusters, 1u);
+    BOOST_CHECK_LE(st1.objective, stf.objective + 1e-9);
+    std::cerr << "[quantization test] " << pb.patches.size() << " patches, " << st1.clusters << " clusters: GLPK "
+              << t_glpk << " s objective " << st1.objective << " (simple " << st1.simple_patches
+              << "), fallback " << t_fb << " s objective " << stf.objective << " (simple " << stf.simple_patches << ")\n";
+  }
+}
+
+BOOST_AUTO_TEST_CASE(large_problem_fallback_and_time_limit)
+{
+  std::mt19937 rng(3);
+  const auto pb = make_grid(50, 50, rng, true);
+  std::vector<int> s;
+  auto stf = QR::quantize_patch_sides(pb, s, QR::parameters::use_mip_solver(false));
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  std::cerr << "[quantization test] fallback on " << pb.patches.size() << " patches: " << stf.seconds << " s\n";
+  // One cluster of ~2000 patches with fractional targets and a 1 s limit.
+  const auto st = QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(100000), P::maximum_running_time(1.)));
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_CHECK_LT(st.seconds, 6.);
+  std::cerr << "[quantization test] one cluster, 1 s limit: " << st.seconds << " s, status " << st.status.at(0)
+            << ", objective " << st.objective << " (fallback alone " << stf.objective << ")\n";
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_throws)
+{
+  std::vector<int> s;
+  Side_quantization_problem pb;
+  pb.arcs = {{1.}, {1.}};
+  pb.patches = {{{0}, {1}}};
+  BOOST_CHECK_THROW(QR::quantize_patch_sides(pb, s), std::invalid_argument);
+  pb.arcs = {{1.}, {1.}, {-1.}};
+  pb.patches = {{{0}, {1}, {2}}};
+  BOOST_CHECK_THROW(QR::quantize_patch_sides(pb, s), std::invalid_argument);
+  pb.arcs = {{1.}, {1.}, {1.}};
+  pb.patches = {{{0}, {1}, {7}}};
+  BOOST_CHECK_THROW(QR::quantize_patch_sides(pb, s), std::invalid_argument);
+  // All arcs fixed with an odd perimeter: impossible.
+  pb.arcs = {{1., 1}, {1., 1}, {1., 1}};
+  pb.patches = {{{0}, {1}, {2}}};
+  BOOST_CHECK_THROW(QR::quantize_patch_sides(pb, s), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
