@@ -592,7 +592,7 @@ compute_cross_field_singularities(const TriangleMesh& tmesh, EdgeIsFeatureMap ed
         sum -= std::atan2(v_norm(v_cross(a, b)), v_dot(a, b));
       }
     int index = 0;
-    if(!on_feature) index = int(std::lround((2. * M_PI + sum) / (0.5 * M_PI)));
+    if(!on_feature) index = int(std::lround((2. * CGAL_PI + sum) / (0.5 * CGAL_PI)));
     put(vertex_singularity_map, v, index);
     if(index != 0) {
       ++stats.singular_vertices;

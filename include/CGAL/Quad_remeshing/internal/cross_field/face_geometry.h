@@ -9,6 +9,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
@@ -124,7 +125,7 @@ inline Face_curvature face_curvature(const Face_frame& fr, const std::array<Vec3
   // eigenvector of l1 has angle 0.5*atan2(2b, a - c); that of l2 is orthogonal
   const double t1 = 0.5 * std::atan2(2. * b, a - c);
   if(std::abs(l1) >= std::abs(l2)) { res.k_max = l1; res.k_min = l2; res.angle = t1; }
-  else { res.k_max = l2; res.k_min = l1; res.angle = t1 + 0.5 * M_PI; }
+  else { res.k_max = l2; res.k_min = l1; res.angle = t1 + 0.5 * CGAL_PI; }
   res.ok = std::isfinite(res.k_max) && std::isfinite(res.k_min) && std::isfinite(res.angle);
   return res;
 }
@@ -133,7 +134,7 @@ inline Face_curvature face_curvature(const Face_frame& fr, const std::array<Vec3
 /// quarter turns removed
 inline double reduce_quarter_turn(double a, int& k)
 {
-  const double q = 0.5 * M_PI;
+  const double q = 0.5 * CGAL_PI;
   const double kk = std::round(a / q);
   k = int(kk);
   return a - kk * q;
