@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -268,8 +269,9 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5u);
 
   Remeshing_statistics st;
-  st.vertices_before = num_vertices(tmesh);
-  st.faces_before = num_faces(tmesh);
+  // (num_faces() of a Surface_mesh counts removed elements)
+  st.vertices_before = std::size_t(std::distance(vertices(tmesh).begin(), vertices(tmesh).end()));
+  st.faces_before = std::size_t(std::distance(faces(tmesh).begin(), faces(tmesh).end()));
   if(st.faces_before == 0)
     return st;
   const double qlen = parameters::is_default_parameter<NamedParameters, internal_np::quad_edge_length_t>::value
@@ -323,8 +325,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remesh_np);
   st.seconds_uniform = timer.time();
   if(verbose)
-    std::cerr << "[remeshing] uniform pass at " << st.target_edge_length << ": " << num_faces(tmesh)
-              << " faces (" << st.seconds_uniform << " s)" << std::endl;
+    std::cerr << "[remeshing] uniform pass at " << st.target_edge_length << ": "
+              << std::distance(faces(tmesh).begin(), faces(tmesh).end()) << " faces (" << st.seconds_uniform << " s)" << std::endl;
 
   if(adaptive)
   {
@@ -345,13 +347,13 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
       // only inside the range and fails on a border face outside it
       PMP::isotropic_remeshing(range, st.target_edge_length * internal::sizing_levels()[b], tmesh,
                                remesh_np.face_patch_map(CGAL::Constant_property_map<face_descriptor, int>(0))
-                                        .collapse_constraints(false));
+                                        .collapse_constraints(true));
       for(face_descriptor f : faces(tmesh))
         if(get(label, f) <= int(b + 1)) put(label, f, 0);
     }
     st.seconds_adaptive = timer.time();
     if(verbose)
-      std::cerr << "[remeshing] adaptive pass: " << num_faces(tmesh) << " faces (" << st.seconds_adaptive
+      std::cerr << "[remeshing] adaptive pass: " << std::distance(faces(tmesh).begin(), faces(tmesh).end()) << " faces (" << st.seconds_adaptive
                 << " s)" << std::endl;
   }
 
@@ -367,8 +369,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     for(vertex_descriptor v : corners) put(given_corners, v, true);
   }
 
-  st.vertices_after = num_vertices(tmesh);
-  st.faces_after = num_faces(tmesh);
+  st.vertices_after = std::size_t(std::distance(vertices(tmesh).begin(), vertices(tmesh).end()));
+  st.faces_after = std::size_t(std::distance(faces(tmesh).begin(), faces(tmesh).end()));
   std::tie(st.min_angle_after, st.mean_angle_after) = internal::triangle_angles(tmesh, vpm);
   for(auto e : edges(tmesh))
     if(get(edge_is_feature_map, e)) ++st.feature_edges_after;
