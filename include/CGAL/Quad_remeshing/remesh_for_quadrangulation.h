@@ -167,12 +167,12 @@ double quad_edge_length_from_scale(const TriangleMesh& tmesh, double scale,
   \ingroup PkgQuadRemeshingRef
   Remeshes a triangle mesh for the cross field and the quad layout, keeping every feature line.
 
-  Pass 1 is a uniform isotropic remeshing at half the quad edge length; pass 2 is adaptive: each face
-  gets a length multiplier from the radius ratio (2 inradius / circumradius) of the pass-1 triangles
-  around it, mapped linearly to [0.3, 3] from the 10th percentile (the worst 10% get 0.3) to the best
-  value. CGAL 5.5's `isotropic_remeshing()` has no sizing field, so the multipliers are rounded to five
-  levels (0.3, 0.55, 1, 1.75, 3) and each level's faces are remeshed by one call restricted to them; the
-  borders between levels stay as pass 1 left them.
+  Pass 1 is a uniform isotropic remeshing at half the quad edge length. Pass 2 (`adaptive_remeshing`,
+  experimental and off by default, see below) gives each face a length multiplier from the radius ratio
+  (2 inradius / circumradius) of the pass-1 triangles around it, mapped linearly to [0.3, 3] from the
+  10th percentile (the worst 10% get 0.3) to the best value. CGAL 5.5's `isotropic_remeshing()` has no
+  sizing field, so the multipliers are rounded to five levels (0.3, 0.55, 1, 1.75, 3) and each level's
+  faces are remeshed by one call restricted to them.
 
   Both passes call `CGAL::Polygon_mesh_processing::isotropic_remeshing()` (split, collapse, flip,
   tangential relaxation, projection onto the input) with the feature edges as constraints: a feature
