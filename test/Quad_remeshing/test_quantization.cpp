@@ -224,6 +224,11 @@ BOOST_AUTO_TEST_CASE(large_problem_fallback_and_time_limit)
   const auto st = QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(100000), P::maximum_running_time(1.)));
   BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
   BOOST_CHECK_LT(st.seconds, 6.);
+  // The fallback is offered as the first incumbent: the limit ends with a solution, no worse than it.
+  BOOST_CHECK(st.status.at(0) == "feasible_at_limit" || st.status.at(0) == "optimal");
+  std::vector<int> sf1;
+  const auto stf1 = QR::quantize_patch_sides(pb, sf1, P::combine(P::maximum_cluster_size(100000), P::use_mip_solver(false)));
+  BOOST_CHECK_LE(st.objective, stf1.objective + 1e-6);
   std::cerr << "[quantization test] one cluster, 1 s limit: " << st.seconds << " s, status " << st.status.at(0)
             << ", objective " << st.objective << " (fallback alone " << stf.objective << ")\n";
 }

@@ -6,6 +6,7 @@
 #include <CGAL/Mixed_integer_program_traits.h>
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <limits>
@@ -74,6 +75,9 @@ public:
   void set_relative_gap(double gap) { relative_gap_ = gap; }
   /// Sets the absolute tolerance used to check the residuals of a returned solution.
   void set_feasibility_tolerance(double tol) { tolerance_ = tol; }
+  /// Gives a feasible starting point (one value per variable, in creation order) offered to the
+  /// search as its first incumbent, so that a time limit still ends with a solution at least as good.
+  void set_initial_solution(const std::vector<double>& x) { initial_ = x; }
   /// The status of the last `solve()`.
   Mip_status status() const { return status_; }
   /// The largest bound or constraint violation of the returned solution.
@@ -136,7 +140,22 @@ public:
       glp_iocp p; glp_init_iocp(&p);
       p.msg_lev = GLP_MSG_OFF;
       p.presolve = GLP_ON;
-      p.tm_lim = time_limit_ms();
+      const auto start = std::chrono::steady_clock::now();
+      if(initial_.size() == std::size_t(nv)) {
+        // The heuristic callback works on the problem GLPK sees: the presolver (which changes it)
+        // is replaced by an explicit root LP solve.
+        glp_smcp sp; glp_init_smcp(&sp);
+        sp.msg_lev = GLP_MSG_OFF;
+        sp.tm_lim = time_limit_ms();
+        if(glp_simplex(lp, &sp) == 0 && glp_get_status(lp) == GLP_OPT) {
+          p.presolve = GLP_OFF;
+          p.cb_func = &GLPK_mixed_integer_program_traits_with_limits::offer_initial;
+          p.cb_info = this;
+          heuristic_offered_ = false;
+        }
+      }
+      const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      p.tm_lim = time_limit_ms(spent);
       p.mip_gap = relative_gap_;
       rc = glp_intopt(lp, &p);
       const int st = glp_mip_status(lp);
@@ -147,6 +166,20 @@ public:
       else if(st == GLP_FEAS) { status_ = Mip_status::FEASIBLE_AT_LIMIT; have = true; }
       else if(rc == GLP_ETMLIM) status_ = Mip_status::NO_SOLUTION;
       if(have) read(lp, true);
+    }
+    // A limit hit before GLPK reached its heuristic stage: the given starting point is still the best
+    // known feasible solution (its residuals are checked below like any other).
+    if(!have && has_integer && initial_.size() == std::size_t(nv) &&
+       (status_ == Mip_status::NO_SOLUTION || status_ == Mip_status::ERROR)) {
+      Base_class::result_.resize(nv);
+      for(int i = 0; i < nv; ++i) {
+        Variable* v = Base_class::variables_[i];
+        const FT x = (v->variable_type() == Variable::CONTINUOUS) ? FT(initial_[i]) : std::round(FT(initial_[i]));
+        v->set_solution_value(x);
+        Base_class::result_[i] = x;
+      }
+      status_ = Mip_status::FEASIBLE_AT_LIMIT;
+      have = true;
     }
     if(!have && Base_class::error_message_.empty())
       Base_class::error_message_ = std::string("GLPK: ") + to_string(status_) + " (code " + std::to_string(rc) + ")";
@@ -179,10 +212,20 @@ private:
     std::sort(row.begin(), row.end());
   }
 
-  int time_limit_ms() const
+  int time_limit_ms(double spent = 0) const
   {
     if(!(time_limit_ > 0) || time_limit_ * 1000. >= double((std::numeric_limits<int>::max)())) return INT_MAX;
-    return (std::max)(1, static_cast<int>(time_limit_ * 1000.));
+    return (std::max)(1, static_cast<int>((time_limit_ - spent) * 1000.));
+  }
+
+  static void offer_initial(glp_tree* tree, void* info)
+  {
+    auto* self = static_cast<GLPK_mixed_integer_program_traits_with_limits*>(info);
+    if(glp_ios_reason(tree) != GLP_IHEUR || self->heuristic_offered_) return;
+    self->heuristic_offered_ = true;
+    std::vector<double> x(self->initial_.size() + 1, 0.); // GLPK arrays are 1-based
+    std::copy(self->initial_.begin(), self->initial_.end(), x.begin() + 1);
+    glp_ios_heur_sol(tree, x.data()); // rejected by GLPK if infeasible or not better
   }
 
   void read(glp_prob* lp, bool mip)
@@ -220,6 +263,8 @@ private:
     return max_residual_ <= tolerance_;
   }
 
+  std::vector<double> initial_;
+  bool heuristic_offered_ = false;
   double time_limit_ = 0;
   double relative_gap_ = 1e-6;
   double tolerance_ = 1e-6;

@@ -48,6 +48,15 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
   mip.set_time_limit(time_limit);
   mip.set_relative_gap(gap);
   Objective* obj = mip.create_objective(Objective::MINIMIZE);
+  // The incoming s (the fallback's values) as a starting point: every auxiliary variable takes its
+  // smallest feasible value. Offered only if every arc lies in its window.
+  std::vector<double> x0;
+  bool x0_valid = true;
+  auto start = [&](Variable* x, double value) {
+    if(x0.size() <= std::size_t(x->index())) x0.resize(std::size_t(x->index()) + 1, 0.);
+    x0[std::size_t(x->index())] = value;
+  };
+  auto e_of = [&](std::size_t p, std::size_t i) { return double(side_count(v, p, i, s)); };
 
   // Arcs in ascending id order: deterministic variable numbering.
   std::map<std::size_t, Variable*> var;
@@ -59,6 +68,10 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
     int lo, hi; arc_window(t, lo, hi);
     kv.second = mip.create_variable(Variable::INTEGER, lo, hi);
     Variable* epi = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
+    const int s0 = s[kv.first];
+    if(s0 < lo || s0 > hi) x0_valid = false;
+    start(kv.second, s0);
+    start(epi, (s0 - t) * (s0 - t));
     obj->add_coefficient(epi, w.isometry);
     for(int j = lo; j < hi; ++j) {
       // epi >= f(j) + m (s - j), m = f(j+1) - f(j), f(x) = (x - t)^2
@@ -85,12 +98,14 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
       for(std::size_t i = 0; i < n; ++i) add_side(c, p, i, 1., constant);
       c->add_coefficient(k, -2.);
       c->set_bounds(-constant, -constant);
+      start(k, 0.5 * double(perimeter(v, p, s)));
     }
     if(n == 4) {
       for(std::size_t i = 0; i < 2; ++i) {
         // d >= |e_i - e_{i+2}| through two rows
         Variable* d = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
         obj->add_coefficient(d, w.regularity_quads);
+        start(d, std::abs(e_of(p, i) - e_of(p, i + 2)));
         for(double sign : {1., -1.}) {
           Constraint* c = mip.create_constraint(0, Variable::infinity());
           double constant = 0;
@@ -106,8 +121,9 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
         Variable* sl = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
         obj->add_coefficient(sl, w.regularity_others / double(n));
         Constraint* c = mip.create_constraint(2, Variable::infinity());
-        double constant = 0;
-        for(std::size_t i = 0; i < n; ++i) if(r[i] != 0) add_side(c, p, i, double(r[i]), constant);
+        double constant = 0, lhs = 0;
+        for(std::size_t i = 0; i < n; ++i) if(r[i] != 0) { add_side(c, p, i, double(r[i]), constant); lhs += r[i] * e_of(p, i); }
+        start(sl, (std::max)(0., 2. - lhs));
         c->add_coefficient(sl, 1.);
         c->set_bounds(2. - constant, Variable::infinity());
       }
@@ -121,12 +137,16 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
         for(std::size_t i : {0, 2, 4}) add_side(c, p, i, 1., constant);
         c->add_coefficient(h, -2.);
         c->add_coefficient(odd, -1.);
+        const long sum = long(e_of(p, 0) + e_of(p, 2) + e_of(p, 4));
+        start(h, double(sum / 2));
+        start(odd, double(sum % 2));
         c->set_bounds(-constant, -constant);
       }
     }
   }
   res.variables = mip.number_of_variables();
   res.constraints = mip.number_of_constraints();
+  if(x0_valid) { x0.resize(mip.number_of_variables(), 0.); mip.set_initial_solution(x0); }
   res.solved = mip.solve();
   res.status = static_cast<int>(mip.status());
   if(res.solved)
