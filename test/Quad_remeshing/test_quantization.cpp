@@ -202,7 +202,12 @@ BOOST_AUTO_TEST_CASE(parity_on_generated_layouts_solver_fallback_threads)
     const double t_fb = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     BOOST_CHECK_EQUAL(odd_or_small(pb, s1), 0u);
     BOOST_CHECK_EQUAL(odd_or_small(pb, sf), 0u);
-    BOOST_CHECK(s1 == s2 || st1.fallback_clusters + st2.fallback_clusters > 0);
+    // A wall-clock limit makes a result time-dependent; proven optima must not depend on threads.
+    auto all_optimal = [](const QR::Side_quantization_statistics& st) {
+      return std::all_of(st.status.begin(), st.status.end(), [](const std::string& x) { return x == "optimal"; });
+    };
+    BOOST_CHECK(all_optimal(st1));
+    if(all_optimal(st1) && all_optimal(st2)) BOOST_CHECK(s1 == s2);
     BOOST_CHECK_EQUAL(st1.odd_perimeters, 0u);
     BOOST_CHECK_GT(st1.clusters, 1u);
     BOOST_CHECK_LE(st1.objective, stf.objective + 1e-9);
