@@ -10,6 +10,16 @@
 
 #include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/Patch_layout.h>
+#include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/cross_field.h>
+#include <CGAL/Quad_remeshing/detect_feature_edges.h>
+#include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
+#include <CGAL/Quad_remeshing/quantize_patch_sides.h>
+#include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>
+#include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
+#include <CGAL/Quad_remeshing/trace_patch_layout.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 #include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 
@@ -21,6 +31,7 @@
 #include <exception>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -42,7 +53,7 @@ const std::vector<std::string> stage_names = {"repair", "features", "remesh", "f
 // The stages this build of the program can run (the others are reported as not available).
 bool stage_available(const std::string& name)
 {
-  return name == "repair";
+  return std::find(stage_names.begin(), stage_names.end(), name) != stage_names.end();
 }
 
 const char* usage_text =
@@ -162,11 +173,27 @@ struct Stage_not_available : std::runtime_error
 };
 
 // Everything the stages hand to each other.
+typedef boost::graph_traits<Triangle_mesh>::edge_descriptor edge_descriptor;
+typedef boost::graph_traits<Triangle_mesh>::vertex_descriptor vertex_descriptor;
+typedef boost::graph_traits<Triangle_mesh>::face_descriptor face_descriptor;
+typedef QR::Patch_layout<Triangle_mesh, Kernel> Layout;
+
 struct Pipeline_state
 {
   Triangle_mesh input;   // the repaired input, for the final quality figures
-  Triangle_mesh tmesh;
+  Triangle_mesh tmesh;   // the triangle mesh the stages work on (remeshed in place)
   QR::Repair_statistics repair;
+  Triangle_mesh::Property_map<edge_descriptor, bool> feature;
+  Triangle_mesh::Property_map<vertex_descriptor, bool> corner;
+  Triangle_mesh::Property_map<face_descriptor, Kernel::Vector_3> field;
+  Triangle_mesh::Property_map<vertex_descriptor, int> singularity;
+  double quad_edge_length = 0.;
+  std::unique_ptr<Layout> layout;
+  std::unique_ptr<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>> polygons;
+  std::vector<int> arc_edge_counts;
+  Quad_mesh qmesh;
+  Quad_mesh::Property_map<Quad_mesh::Edge_index, bool> qfeature;
+  bool has_quads = false;
 };
 
 class Pipeline
@@ -240,7 +267,12 @@ private:
     stage["status"] = "ok";
     stage["seconds"] = timer.time();
     for(std::size_t i = 0; i < figures.keys().size(); ++i)
-      if(figures.keys()[i] != "seconds") stage[figures.keys()[i]] = figures.elements()[i];
+    {
+      const std::string& k = figures.keys()[i];
+      if(k == "seconds") continue;
+      // the stage record's own "name" and "status" stay; a stage's figure of that name is renamed
+      stage[(k == "status" || k == "name") ? "stage_" + k : k] = figures.elements()[i];
+    }
     report_["stages"].push_back(stage);
     if(opt_.verbose) std::cerr << "[" << name << "] done in " << stage["seconds"].number() << " s\n";
     last_stage_ = name;
@@ -251,6 +283,13 @@ private:
     if(!stage_available(name))
       throw Stage_not_available("stage '" + name + "' is not available in this version of quad_remesh");
     if(name == "repair") return stage_repair();
+    if(name == "features") return stage_features();
+    if(name == "remesh") return stage_remesh();
+    if(name == "field") return stage_field();
+    if(name == "layout") return stage_layout();
+    if(name == "quantize") return stage_quantize();
+    if(name == "quadrangulate") return stage_quadrangulate();
+    if(name == "smooth") return stage_smooth();
     throw Stage_not_available("stage '" + name + "' is not available in this version of quad_remesh");
   }
 
@@ -264,15 +303,166 @@ private:
     return state_.repair.report();
   }
 
+  QR::Report stage_features()
+  {
+    namespace QRP = QR::parameters;
+    state_.feature = state_.tmesh.add_property_map<edge_descriptor, bool>("e:qr_feature", false).first;
+    state_.corner = state_.tmesh.add_property_map<vertex_descriptor, bool>("v:qr_corner", false).first;
+    bool given = false;
+    if(!opt_.features_file.empty())
+    {
+      QR::read_feature_edges(opt_.features_file, state_.tmesh, state_.feature);
+      given = true;
+    }
+    const QR::Feature_detection_statistics st = QR::detect_feature_edges(
+      state_.tmesh, state_.feature,
+      QRP::combine(QRP::feature_angle(opt_.feature_angle).verbose(opt_.verbose), QRP::use_given_feature_edges(given),
+                   QRP::vertex_is_feature_corner_map(state_.corner)));
+    if(!opt_.dump_dir.empty())
+    {
+      // CGAL polylines: one two-point polyline per feature edge
+      std::ofstream out(opt_.dump_dir + "/2_features.polylines.txt");
+      out.precision(17);
+      for(auto e : edges(state_.tmesh))
+        if(state_.feature[e])
+          out << "2 " << state_.tmesh.point(source(e, state_.tmesh)) << " " << state_.tmesh.point(target(e, state_.tmesh)) << "\n";
+    }
+    extra_layers_.push_back(QR::feature_edges_layer("feature lines", state_.tmesh, state_.feature));
+    return st.report();
+  }
+
+  QR::Report stage_remesh()
+  {
+    namespace QRP = QR::parameters;
+    if(opt_.edge_length > 0) state_.quad_edge_length = opt_.edge_length;
+    else if(opt_.faces > 0) state_.quad_edge_length = QR::quad_edge_length_from_face_count(state_.tmesh, std::size_t(opt_.faces));
+    else state_.quad_edge_length = QR::quad_edge_length_from_scale(state_.tmesh, opt_.scale);
+    const QR::Remeshing_statistics st = QR::remesh_for_quadrangulation(
+      state_.tmesh, state_.feature,
+      QRP::combine(QRP::quad_edge_length(state_.quad_edge_length).verbose(opt_.verbose),
+                   QRP::vertex_is_feature_corner_map(state_.corner)));
+    // later stages index elements densely: drop the removed ones (property maps are compacted with them)
+    state_.tmesh.collect_garbage();
+    dump_mesh("3_remesh.off", state_.tmesh);
+    QR::Report r = st.report();
+    r["quad_edge_length"] = state_.quad_edge_length;
+    return r;
+  }
+
+  QR::Report stage_field()
+  {
+    state_.field = state_.tmesh.add_property_map<face_descriptor, Kernel::Vector_3>("f:qr_field", CGAL::NULL_VECTOR).first;
+    state_.singularity = state_.tmesh.add_property_map<vertex_descriptor, int>("v:qr_singularity", 0).first;
+    const auto st = QR::compute_cross_field(state_.tmesh, state_.feature, state_.field,
+                                            CGAL::parameters::verbose(opt_.verbose).random_seed(opt_.seed));
+    const auto ss = QR::compute_cross_field_singularities(state_.tmesh, state_.feature, state_.field, state_.singularity,
+                                                          CGAL::parameters::verbose(opt_.verbose));
+    if(!opt_.dump_dir.empty())
+    {
+      std::ofstream f(opt_.dump_dir + "/4_field.obj");
+      QR::write_cross_field_OBJ(f, state_.tmesh, state_.field);
+      std::ofstream g(opt_.dump_dir + "/4_singularities.ply");
+      QR::write_cross_field_singularities_PLY(g, state_.tmesh, state_.singularity);
+    }
+    QR::Report r = st.report();
+    const QR::Report rs = ss.report();
+    for(std::size_t i = 0; i < rs.keys().size(); ++i)
+      if(rs.keys()[i] != "seconds") r[rs.keys()[i]] = rs.elements()[i];
+    return r;
+  }
+
+  QR::Report stage_layout()
+  {
+    state_.layout = std::make_unique<Layout>(state_.tmesh, state_.field, state_.singularity);
+    const auto st = QR::trace_patch_layout(state_.tmesh, state_.feature, *state_.layout,
+                                           CGAL::parameters::verbose(opt_.verbose));
+    if(!opt_.dump_dir.empty())
+    {
+      std::ofstream f(opt_.dump_dir + "/5_layout.ply");
+      state_.layout->write_ply(f);
+      std::ofstream g(opt_.dump_dir + "/5_paths.polylines.txt");
+      state_.layout->write_polylines(g);
+    }
+    return st.report();
+  }
+
+  QR::Report stage_quantize()
+  {
+    namespace QRP = QR::parameters;
+    state_.polygons = std::make_unique<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>>(state_.tmesh,
+                                                                                                   *state_.layout);
+    const QR::Side_quantization_problem pb =
+      QR::internal::quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.quad_edge_length);
+    double limit = opt_.time_limit > 0 ? opt_.time_limit : 10.;
+    const auto st = QR::quantize_patch_sides(pb, state_.arc_edge_counts,
+                                             QRP::number_of_threads(opt_.threads).maximum_running_time(limit));
+    QR::Report r = st.report();
+    r["relaxed_patches"] = state_.polygons->relaxed_patches;
+    r["added_corners"] = state_.polygons->added_corners;
+    r["dropped_corners"] = state_.polygons->dropped_corners;
+    return r;
+  }
+
+  QR::Report stage_quadrangulate()
+  {
+    const auto description =
+      QR::internal::layout_description(state_.tmesh, *state_.layout, *state_.polygons, state_.feature);
+    std::vector<QR::Polygon_quadrangulation> patterns;
+    std::size_t simple = 0, general = 0;
+    std::map<int, int> irregular;
+    for(const auto& patch : description.patches)
+    {
+      std::vector<int> e;
+      for(const auto& side : patch.sides)
+      {
+        int c = 0;
+        for(const auto& sa : side) c += state_.arc_edge_counts[sa.arc];
+        e.push_back(c);
+      }
+      patterns.push_back(QR::quadrangulate_polygon(e));
+      if(patterns.back().strategy == QR::Polygon_quadrangulation::SIMPLE) ++simple; else ++general;
+      for(const auto& kv : patterns.back().irregular_vertices_by_valence) irregular[kv.first] += kv.second;
+    }
+    state_.qfeature = state_.qmesh.add_property_map<Quad_mesh::Edge_index, bool>("e:qr_feature", false).first;
+    const QR::Quad_assembly_statistics st =
+      QR::assemble_quad_mesh(state_.tmesh, description, state_.arc_edge_counts, patterns, state_.qmesh, state_.qfeature,
+                             opt_.verbose);
+    state_.has_quads = true;
+    if(!opt_.dump_dir.empty()) QR::write_mesh(opt_.dump_dir + "/7_quadrangulate.obj", state_.qmesh);
+    QR::Report r = st.report();
+    r["simple_patches"] = simple;
+    r["general_patches"] = general;
+    for(const auto& kv : irregular) r["pattern_irregular_vertices"][std::to_string(kv.first)] = kv.second;
+    return r;
+  }
+
+  QR::Report stage_smooth()
+  {
+    const QR::Quad_smoothing_statistics st = QR::smooth_quad_mesh(
+      state_.qmesh, state_.tmesh, state_.feature,
+      CGAL::parameters::edge_is_constrained_map(state_.qfeature).verbose(opt_.verbose));
+    return st.report();
+  }
+
   void write_output()
   {
     // The mesh of the last finished stage is the output (triangles before the quad stages).
-    QR::write_mesh(opt_.output, state_.tmesh);
     report_["output"]["file"] = opt_.output;
     report_["output"]["stage"] = last_stage_;
-    report_["output"]["V"] = num_vertices(state_.tmesh);
-    report_["output"]["F"] = num_faces(state_.tmesh);
-    measure_output(state_.tmesh);
+    if(state_.has_quads)
+    {
+      QR::write_mesh(opt_.output, state_.qmesh);
+      report_["output"]["V"] = num_vertices(state_.qmesh);
+      report_["output"]["F"] = num_faces(state_.qmesh);
+      measure_output(state_.qmesh);
+    }
+    else
+    {
+      QR::write_mesh(opt_.output, state_.tmesh);
+      report_["output"]["V"] = num_vertices(state_.tmesh);
+      report_["output"]["F"] = num_faces(state_.tmesh);
+      measure_output(state_.tmesh);
+    }
   }
 
   // Quality of the output and its fidelity to the (repaired) input, with the evaluation's own
@@ -332,11 +522,11 @@ private:
       if(num_faces(state_.input) > 0)
         scene.layers.push_back(QR::polygon_mesh_layer("input (repaired)", state_.input));
       for(QR::Html_layer& l : extra_layers_) scene.layers.push_back(l);
-      if(report_["status"].string() == "ok" && num_faces(state_.tmesh) > 0 && last_stage_ == "smooth")
+      if(state_.has_quads && num_faces(state_.qmesh) > 0)
       {
-        scene.layers.push_back(QR::scaled_jacobian_layer("quad mesh (scaled Jacobian)", state_.tmesh));
-        scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", state_.tmesh));
-        scene.histograms = QR::quad_mesh_histograms(state_.tmesh);
+        scene.layers.push_back(QR::scaled_jacobian_layer("quad mesh (scaled Jacobian)", state_.qmesh));
+        scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", state_.qmesh));
+        scene.histograms = QR::quad_mesh_histograms(state_.qmesh);
       }
       else if(report_["status"].string() == "ok" && last_stage_ != "repair" && num_faces(state_.tmesh) > 0)
         scene.layers.push_back(QR::polygon_mesh_layer("output of stage '" + last_stage_ + "'", state_.tmesh));

@@ -1,0 +1,281 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Turns a Patch_layout into the inputs of the quantization and of the assembly.
+
+#ifndef CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_LAYOUT_CONVERSION_H
+#define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_LAYOUT_CONVERSION_H
+
+#include <CGAL/Quad_remeshing/Patch_layout.h>
+#include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/quantize_patch_sides.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+/*
+  The polygons the quadrangulation works on. A valid patch of the layout is used as it is: its
+  corners are its turns. A patch that is still a disk but breaks the other validity conditions (a
+  left turn or U-turn, fewer than 3 or more than 6 corners) is quadrangulated all the same with
+  corners chosen among its convex turns: non-convex turns become points of a side (the map onto the
+  convex polygon stays one-to-one, the quads there are less regular), with more than 6 corners the
+  ones joining the shortest sides are dropped, and with fewer than 4 corners points near the middle of
+  the longest sides are added, splitting arcs where needed (the patch on the other side of such an arc
+  sees the same split). Patches that are not disks are refused.
+*/
+template <typename TriangleMesh, typename Layout>
+struct Quadrangulation_layout
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  struct Piece { std::size_t arc; std::size_t first, last; }; // halfedge index range [first, last] of a layout arc
+  std::vector<Piece> pieces;                                   // the refined arcs
+  std::vector<std::vector<std::vector<std::pair<std::size_t, bool>>>> patch_sides; // piece id, reversed
+  std::size_t relaxed_patches = 0;                             // patches whose corners were re-chosen
+  std::size_t added_corners = 0, dropped_corners = 0;
+
+  Quadrangulation_layout(const TriangleMesh& tm, const Layout& layout)
+  {
+    const auto& arcs = layout.arcs();
+    const auto& patches = layout.patches();
+    std::map<halfedge_descriptor, std::pair<std::size_t, std::size_t>> where; // halfedge -> (arc, index), forward
+    for(std::size_t a = 0; a < arcs.size(); ++a)
+      for(std::size_t k = 0; k < arcs[a].halfedges.size(); ++k) where[arcs[a].halfedges[k]] = {a, k};
+    auto locate = [&](halfedge_descriptor h, bool& reversed) {
+      auto it = where.find(h);
+      if(it != where.end()) { reversed = false; return it->second; }
+      it = where.find(opposite(h, tm));
+      if(it == where.end()) throw std::runtime_error("layout conversion: a patch boundary edge is on no arc");
+      reversed = true;
+      return it->second;
+    };
+    auto length = [&](halfedge_descriptor h) {
+      return std::sqrt(CGAL::to_double(CGAL::squared_distance(tm.point(source(h, tm)), tm.point(target(h, tm)))));
+    };
+    // splits[a]: split after these halfedge indices (the vertex target(halfedges[k]))
+    std::vector<std::set<std::size_t>> splits(arcs.size());
+    std::vector<std::vector<std::size_t>> corners_of(patches.size()); // loop positions i: corner at target(L[i])
+    for(std::size_t p = 0; p < patches.size(); ++p)
+    {
+      const auto& P = patches[p];
+      if(P.loops.size() != 1 || P.euler_characteristic != 1)
+        throw std::runtime_error("patch " + std::to_string(p) + " of the layout is not a disk");
+      const auto& L = P.loops[0];
+      const auto& T = P.turns[0];
+      const std::size_t m = L.size();
+      std::vector<double> cum(m + 1, 0.);
+      for(std::size_t i = 0; i < m; ++i) cum[i + 1] = cum[i] + length(L[i]);
+      std::vector<std::size_t> corners;
+      for(std::size_t i = 0; i < m; ++i)
+        if(T[i] == Layout::RIGHT_TURN) corners.push_back(i);
+      const bool valid = layout.validity(p) == Layout::SATISFIED;
+      if(valid)
+      {
+        corners.clear();
+        for(std::size_t i = 0; i < m; ++i)
+          if(T[i] != Layout::STRAIGHT) corners.push_back(i);
+      }
+      else ++relaxed_patches;
+      auto side_length = [&](std::size_t c) { // from corners[c] to corners[c+1], cyclically
+        const std::size_t i = corners[c], j = corners[(c + 1) % corners.size()];
+        return j > i ? cum[j] - cum[i] : cum[m] - cum[i] + cum[j];
+      };
+      while(corners.size() > 6)
+      {
+        std::size_t best = 0;
+        double best_len = 1e300;
+        for(std::size_t c = 0; c < corners.size(); ++c)
+        {
+          const double l = side_length((c + corners.size() - 1) % corners.size()) + side_length(c);
+          if(l < best_len) { best_len = l; best = c; }
+        }
+        corners.erase(corners.begin() + std::ptrdiff_t(best));
+        ++dropped_corners;
+      }
+      while(corners.size() < 4 && corners.size() < m)
+      {
+        // the middle of the longest side (the whole loop when there is no corner)
+        std::size_t from = 0;
+        double len = cum[m];
+        if(!corners.empty())
+        {
+          std::size_t c_best = 0;
+          double l_best = -1;
+          for(std::size_t c = 0; c < corners.size(); ++c)
+            if(side_length(c) > l_best) { l_best = side_length(c); c_best = c; }
+          from = corners[c_best];
+          len = l_best;
+        }
+        const double target_len = (corners.empty() ? 0. : cum[from]) + 0.5 * len;
+        std::size_t best_i = m;
+        double best_d = 1e300;
+        for(std::size_t step = 1; step < m; ++step)
+        {
+          const std::size_t i = (corners.empty() ? step - 1 : (from + step) % m);
+          if(std::find(corners.begin(), corners.end(), i) != corners.end()) break; // reached the next corner
+          double pos = cum[i + 1];
+          if(!corners.empty() && i < from) pos += cum[m];
+          const double d = std::abs(pos - target_len);
+          if(d < best_d) { best_d = d; best_i = i; }
+        }
+        if(best_i == m) break;
+        corners.push_back(best_i);
+        std::sort(corners.begin(), corners.end());
+        ++added_corners;
+      }
+      if(corners.size() < 2) throw std::runtime_error("patch " + std::to_string(p) + " is too small to be quadrangulated");
+      // corners that are not at the end of an arc split that arc
+      for(std::size_t i : corners)
+      {
+        bool r1, r2;
+        const auto w1 = locate(L[i], r1);
+        const auto w2 = locate(L[(i + 1) % m], r2);
+        if(w1.first != w2.first || w1.first == std::size_t(-1)) continue; // already an arc end
+        const std::size_t a = w1.first;
+        const std::size_t n_he = arcs[a].halfedges.size();
+        // the vertex target(L[i]) is target(halfedges[k]) going forward, or source(halfedges[k]) going backwards
+        const std::size_t k = r1 ? w1.second - 1 : w1.second;
+        if(k + 1 < n_he && k < n_he) splits[a].insert(k);
+      }
+      corners_of[p] = corners;
+    }
+    // the refined arcs
+    std::vector<std::vector<std::size_t>> piece_of(arcs.size()); // per halfedge index of an arc
+    for(std::size_t a = 0; a < arcs.size(); ++a)
+    {
+      const std::size_t n_he = arcs[a].halfedges.size();
+      piece_of[a].resize(n_he);
+      std::size_t first = 0;
+      for(std::size_t k = 0; k < n_he; ++k)
+      {
+        piece_of[a][k] = pieces.size();
+        if(splits[a].count(k) || k + 1 == n_he)
+        {
+          pieces.push_back({a, first, k});
+          first = k + 1;
+        }
+      }
+    }
+    // sides of every patch, as pieces between its corners
+    patch_sides.resize(patches.size());
+    for(std::size_t p = 0; p < patches.size(); ++p)
+    {
+      const auto& L = patches[p].loops[0];
+      const std::size_t m = L.size();
+      const auto& corners = corners_of[p];
+      const std::size_t start = (corners.front() + 1) % m;
+      std::vector<std::pair<std::size_t, bool>> side;
+      std::size_t last_piece = std::size_t(-1);
+      for(std::size_t j = 0; j < m; ++j)
+      {
+        const std::size_t i = (start + j) % m;
+        bool reversed;
+        const auto w = locate(L[i], reversed);
+        const std::size_t piece = piece_of[w.first][w.second];
+        if(piece != last_piece) { side.emplace_back(piece, reversed); last_piece = piece; }
+        if(std::binary_search(corners.begin(), corners.end(), i))
+        {
+          patch_sides[p].push_back(side);
+          side.clear();
+          last_piece = std::size_t(-1);
+        }
+      }
+      if(!side.empty()) throw std::runtime_error("layout conversion: patch loop does not end at a corner");
+    }
+  }
+};
+
+// The arcs' targets are their field-measured lengths in quad edges (a piece of an arc gets the share
+// of its arc's field length given by its share of the arc's Euclidean length).
+template <typename TriangleMesh, typename Layout>
+Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Layout& layout,
+                                               const Quadrangulation_layout<TriangleMesh, Layout>& ql,
+                                               double quad_edge_length)
+{
+  if(!(quad_edge_length > 0)) throw std::invalid_argument("quantization_problem: the quad edge length must be positive");
+  auto length = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(tm.point(source(h, tm)), tm.point(target(h, tm)))));
+  };
+  Side_quantization_problem pb;
+  for(const auto& piece : ql.pieces)
+  {
+    const auto& arc = layout.arcs()[piece.arc];
+    double total = 0, part = 0;
+    for(std::size_t k = 0; k < arc.halfedges.size(); ++k)
+    {
+      const double l = length(arc.halfedges[k]);
+      total += l;
+      if(k >= piece.first && k <= piece.last) part += l;
+    }
+    Side_quantization_problem::Arc a;
+    a.target = (std::max)(arc.length * (total > 0 ? part / total : 1.) / quad_edge_length, 1e-3);
+    pb.arcs.push_back(a);
+  }
+  for(const auto& sides : ql.patch_sides)
+  {
+    std::vector<std::vector<std::size_t>> s;
+    for(const auto& side : sides)
+    {
+      std::vector<std::size_t> ids;
+      for(const auto& pr : side) ids.push_back(pr.first);
+      s.push_back(ids);
+    }
+    pb.patches.push_back(s);
+  }
+  return pb;
+}
+
+// Arcs as vertex chains and patches as ordered, oriented arcs, for assemble_quad_mesh().
+template <typename TriangleMesh, typename Layout, typename EdgeIsFeatureMap>
+Patch_layout_description<TriangleMesh> layout_description(const TriangleMesh& tm, const Layout& layout,
+                                                          const Quadrangulation_layout<TriangleMesh, Layout>& ql,
+                                                          EdgeIsFeatureMap edge_is_feature)
+{
+  typedef Patch_layout_description<TriangleMesh> Description;
+  Description d;
+  for(const auto& piece : ql.pieces)
+  {
+    const auto& arc = layout.arcs()[piece.arc];
+    typename Description::Arc a;
+    a.vertices.push_back(source(arc.halfedges[piece.first], tm));
+    for(std::size_t k = piece.first; k <= piece.last; ++k) a.vertices.push_back(target(arc.halfedges[k], tm));
+    a.on_feature = get(edge_is_feature, edge(arc.halfedges[piece.first], tm));
+    d.arcs.push_back(a);
+  }
+  const auto& patches = layout.patches();
+  for(std::size_t p = 0; p < patches.size(); ++p)
+  {
+    typename Description::Patch P;
+    P.faces = patches[p].faces;
+    for(const auto& side : ql.patch_sides[p])
+    {
+      std::vector<typename Description::Side_arc> s;
+      for(const auto& pr : side)
+      {
+        typename Description::Side_arc sa;
+        sa.arc = pr.first;
+        sa.reversed = pr.second;
+        s.push_back(sa);
+      }
+      P.sides.push_back(s);
+    }
+    d.patches.push_back(P);
+  }
+  return d;
+}
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif
