@@ -15,6 +15,7 @@
 #include <CGAL/Quad_remeshing/detect_feature_edges.h>
 #include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
+#include <CGAL/Quad_remeshing/quad_remesh.h>
 #include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
 #include <CGAL/Quad_remeshing/quantize_patch_sides.h>
 #include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>

@@ -1,0 +1,168 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The whole pipeline in one call.
+
+#ifndef CGAL_QUAD_REMESHING_QUAD_REMESH_H
+#define CGAL_QUAD_REMESHING_QUAD_REMESH_H
+
+#include <CGAL/Quad_remeshing/Patch_layout.h>
+#include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/cross_field.h>
+#include <CGAL/Quad_remeshing/detect_feature_edges.h>
+#include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
+#include <CGAL/Quad_remeshing/quantize_patch_sides.h>
+#include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>
+#include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
+#include <CGAL/Quad_remeshing/trace_patch_layout.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+// Removed elements of a Surface_mesh stay in its arrays until collected; other models have none.
+template <typename Mesh>
+void collect_garbage(Mesh&) {}
+template <typename P>
+void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
+
+} // namespace internal
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+
+  turns a triangle mesh into a pure-quad mesh that reproduces its feature lines, running every stage
+  with its defaults: `detect_feature_edges()`, `remesh_for_quadrangulation()` (on a copy of `tmesh`),
+  `compute_cross_field()` and `compute_cross_field_singularities()`, `Patch_layout` and
+  `trace_patch_layout()`, `quantize_patch_sides()`, `quadrangulate_polygon()` per patch,
+  `assemble_quad_mesh()` and `smooth_quad_mesh()`.
+
+  \code{.cpp}
+  Mesh tmesh, qmesh;
+  CGAL::Quad_remeshing::read_and_repair("fandisk.off", tmesh);
+  CGAL::Quad_remeshing::quad_remesh(tmesh, qmesh);
+  \endcode
+
+  @tparam TriangleMesh a model of `MutableFaceGraph` with an internal point property map
+          (e.g. `CGAL::Surface_mesh`), copy-constructible
+  @tparam QuadMesh a model of `MutableFaceGraph`
+  @tparam NamedParameters a sequence of named parameters
+
+  @param tmesh the input triangle mesh (not changed)
+  @param qmesh the output, empty on entry
+  @param np an optional sequence of named parameters among the ones listed below; they are also
+         passed on to the stages (e.g. `feature_angle`, `quad_edge_length`, `number_of_threads`)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{quad_edge_length}
+      \cgalParamDescription{the target edge length of the quads}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`default_quad_edge_length(tmesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{feature_angle}
+      \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`35`}
+    \cgalParamNEnd
+    \cgalParamNBegin{callback}
+      \cgalParamDescription{called with the name of each stage when it starts}
+      \cgalParamType{a callable `void(const std::string&)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{whether the stages print their progress and timing to `std::cerr`}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  @return the report of every stage (key: the stage name) and the total `"seconds"`
+  @throws std::invalid_argument or std::runtime_error with the reason when a stage fails
+*/
+template <typename TriangleMesh, typename QuadMesh, typename NamedParameters = parameters::Default_named_parameters>
+Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type K;
+  typedef Patch_layout<TriangleMesh, K> Layout;
+  namespace QRP = parameters;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Report report = Report::object();
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const std::function<void(const std::string&)> no_callback = [](const std::string&) {};
+  const auto progress = choose_parameter(get_parameter(np, CGAL::internal_np::callback), no_callback);
+  const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
+
+  TriangleMesh tm(tmesh);
+  auto feature = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+  auto corner = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
+
+  progress("features");
+  report["features"] = detect_feature_edges(tm, feature,
+    QRP::combine(QRP::feature_angle(angle).verbose(verbose), QRP::vertex_is_feature_corner_map(corner))).report();
+
+  progress("remesh");
+  const double length = choose_parameter(get_parameter(np, internal_np::quad_edge_length), default_quad_edge_length(tm));
+  report["remesh"] = remesh_for_quadrangulation(tm, feature,
+    QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::vertex_is_feature_corner_map(corner))).report();
+  internal::collect_garbage(tm); // later stages index elements densely
+
+  progress("field");
+  auto field = get(CGAL::dynamic_face_property_t<typename K::Vector_3>(), tm);
+  auto singularity = get(CGAL::dynamic_vertex_property_t<int>(), tm);
+  report["field"] = compute_cross_field(tm, feature, field, CGAL::parameters::verbose(verbose)).report();
+  report["singularities"] =
+    compute_cross_field_singularities(tm, feature, field, singularity, CGAL::parameters::verbose(verbose)).report();
+
+  progress("layout");
+  Layout layout(tm, field, singularity);
+  report["layout"] = trace_patch_layout(tm, feature, layout, CGAL::parameters::verbose(verbose)).report();
+
+  progress("quantize");
+  const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
+  std::vector<int> counts;
+  report["quantize"] = quantize_patch_sides(internal::quantization_problem(tm, layout, polygons, length), counts,
+    QRP::number_of_threads(choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u))).report();
+
+  progress("quadrangulate");
+  const auto description = internal::layout_description(tm, layout, polygons, feature);
+  std::vector<Polygon_quadrangulation> patterns;
+  for(const auto& patch : description.patches)
+  {
+    std::vector<int> e;
+    for(const auto& side : patch.sides)
+    {
+      int c = 0;
+      for(const auto& sa : side) c += counts[sa.arc];
+      e.push_back(c);
+    }
+    patterns.push_back(quadrangulate_polygon(e));
+  }
+  auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), qmesh);
+  report["quadrangulate"] = assemble_quad_mesh(tm, description, counts, patterns, qmesh, qfeature, verbose).report();
+
+  progress("smooth");
+  report["smooth"] = smooth_quad_mesh(qmesh, tm, feature,
+                                      CGAL::parameters::edge_is_constrained_map(qfeature).verbose(verbose)).report();
+  report["seconds"] = timer.time();
+  return report;
+}
+
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_QUAD_REMESH_H

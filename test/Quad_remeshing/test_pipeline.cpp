@@ -1,0 +1,48 @@
+// The whole pipeline in one call, on real meshes: a valid pure-quad mesh that keeps the features.
+#include "test_support.h"
+
+#include <CGAL/Quad_remeshing/IO.h>
+#include <CGAL/Quad_remeshing/quad_mesh_quality.h>
+#include <CGAL/Quad_remeshing/quad_remesh.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+namespace QR = CGAL::Quad_remeshing;
+using qr_test::Mesh;
+}
+
+BOOST_AUTO_TEST_SUITE(pipeline)
+
+BOOST_AUTO_TEST_CASE(fandisk_end_to_end)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("fandisk.off"), t);
+  std::vector<std::string> stages;
+  const std::function<void(const std::string&)> cb = [&](const std::string& s) { stages.push_back(s); };
+  const QR::Report r = QR::quad_remesh(t, q, CGAL::parameters::callback(cb));
+  BOOST_TEST(stages.size() == 7u);
+  BOOST_TEST(r.find("layout") != nullptr);
+
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(quality.components == 1u);
+  BOOST_TEST(quality.euler_characteristic == 2);
+  BOOST_TEST(quality.faces > 500u);
+
+  auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  QR::detect_evaluation_feature_edges(t, features);
+  const QR::Feature_fidelity f = QR::feature_fidelity(t, features, q);
+  BOOST_TEST_MESSAGE("fandisk: " << quality.faces << " quads, I=" << quality.irregular_vertices << " SJ mean "
+                     << quality.mean_scaled_jacobian << " min " << quality.min_scaled_jacobian << " Hausdorff "
+                     << f.hausdorff_max << " coverage " << f.feature_coverage);
+  BOOST_TEST(f.feature_coverage >= 0.98);
+  BOOST_TEST(f.hausdorff_max <= 0.02);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
