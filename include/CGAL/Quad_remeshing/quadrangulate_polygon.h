@@ -193,10 +193,10 @@ inline bool admits_simple_quadrangulation(const std::vector<int>& e)
   Positions: boundary on the regular n-gon, interior by a uniform-weight harmonic (Tutte) map,
   solved with Eigen's sparse Cholesky factorization. Deterministic.
 
-  @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+  @tparam NamedParameters a sequence of named parameters
 
   @param side_edge_counts number of edges of each side, sides in counterclockwise order
-  @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+  @param np an optional sequence of named parameters among the ones listed below
 
   @pre `2 <= side_edge_counts.size() <= 6`, every count `>= 1`, the sum even and `>= 4`
        (checked: `std::invalid_argument`)
