@@ -37,3 +37,10 @@ qr_cli_test(list_stages 0 ARGS --list-stages OUTPUT_MATCHES "repair available")
 qr_cli_test(html_report 0
             ARGS ${QR_MESHES}/xyz_cube_20mm.off --until repair -o ${QR_CLI_OUT}/cube.off --html ${QR_CLI_OUT}/cube.html --quiet
             FILE ${QR_CLI_OUT}/cube.html FILE_MATCHES "importmap.*input \\(repaired\\)")
+# the whole pipeline on a bundled open CAD mesh: a valid, manifold pure-quad mesh and every stage's
+# dump (inverted quads are not yet excluded on this mesh: see the issues)
+qr_cli_test(full_pipeline_lego 0
+            ARGS ${QR_MESHES}/lego.off -o ${QR_CLI_OUT}/lego_quad.obj --report ${QR_CLI_OUT}/lego.json
+                 --dump ${QR_CLI_OUT}/lego_dump --quiet
+            FILE ${QR_CLI_OUT}/lego.json
+            FILE_MATCHES "\"status\": \"ok\".*\"name\": \"smooth\".*\"pure_quad\": true.*\"manifold\": true.*\"valid\": true")
