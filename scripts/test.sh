@@ -22,5 +22,6 @@ if [ "${QR_SKIP_SANITIZERS:-0}" != "1" ]; then
         -DQR_BUILD_DOC=OFF -DQR_BUILD_BENCHMARK=OFF -DQR_BUILD_FUZZ=OFF
   cmake --build "$build-asan" -j "$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp \
     ctest --test-dir "$build-asan" --output-on-failure -j "$jobs" --timeout 1800 -E "install_and_consume"
 fi
