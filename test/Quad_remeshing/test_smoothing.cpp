@@ -30,7 +30,7 @@ double min_sj(const Mesh& q)
     std::array<Point_3, 4> p;
     int i = 0;
     for(auto v : vertices_around_face(halfedge(f, q), q)) p[i++] = q.point(v);
-    m = std::min(m, QR::internal::quad_scaled_jacobian<Vector_3>(p));
+    m = std::min(m, QR::internal::quality::quad_scaled_jacobian(p));
   }
   return m;
 }
@@ -80,9 +80,9 @@ BOOST_AUTO_TEST_CASE(square_fit_of_a_square_is_itself)
   std::array<Point_3, 4> p = {Point_3(0, 0, 0), Point_3(2, 0, 0), Point_3(2, 2, 0), Point_3(0, 2, 0)};
   auto q = QR::internal::best_fit_square<Vector_3>(p);
   for(int i = 0; i < 4; ++i) BOOST_TEST(CGAL::squared_distance(p[i], q[i]) < 1e-24);
-  BOOST_TEST(QR::internal::quad_scaled_jacobian<Vector_3>(p) == 1., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(QR::internal::quality::quad_scaled_jacobian(p) == 1., boost::test_tools::tolerance(1e-12));
   std::array<Point_3, 4> bowtie = {Point_3(0, 0, 0), Point_3(2, 0, 0), Point_3(0, 2, 0), Point_3(2, 2, 0)};
-  BOOST_TEST(QR::internal::quad_scaled_jacobian<Vector_3>(bowtie) <= 0.);
+  BOOST_TEST(QR::internal::quality::quad_scaled_jacobian(bowtie) <= 0.);
 }
 
 BOOST_AUTO_TEST_CASE(fandisk_split_quads_improve_and_stay_on_features)

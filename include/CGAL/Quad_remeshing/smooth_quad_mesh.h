@@ -8,6 +8,7 @@
 
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
 #include <CGAL/Quad_remeshing/internal/smoothing/quad_geometry.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -335,7 +336,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   };
   auto quad_sj = [&](q_face f) {
     std::array<Point_3, 4> pts;
-    return quad_points(f, pts) ? internal::quad_scaled_jacobian<Vector_3>(pts) : 1.;
+    return quad_points(f, pts) ? internal::quality::quad_scaled_jacobian(pts) : 1.;
   };
   auto min_sj_around = [&](q_vertex v) {
     double m = 1.;
@@ -351,7 +352,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     {
       std::array<Point_3, 4> pts;
       if(!quad_points(f, pts)) continue;
-      const double s = internal::quad_scaled_jacobian<Vector_3>(pts);
+      const double s = internal::quality::quad_scaled_jacobian(pts);
       mn = (std::min)(mn, s);
       mean += s;
       ++n;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL Quad_remeshing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Small geometric helpers on single quads: scaled Jacobian and best-fit square.
+// Best-fit square of a single quad (the scaled Jacobian is internal::quality::quad_scaled_jacobian).
 
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_SMOOTHING_QUAD_GEOMETRY_H
 #define CGAL_QUAD_REMESHING_INTERNAL_SMOOTHING_QUAD_GEOMETRY_H
@@ -13,29 +13,6 @@
 namespace CGAL {
 namespace Quad_remeshing {
 namespace internal {
-
-// Verdict's quad scaled Jacobian: the minimum over the corners of n . (e_prev x e_next) / (|e_prev||e_next|),
-// with n the unit normal along (p2 - p0) x (p3 - p1); 0 for a collapsed quad, in [-1, 1].
-template <typename Vector_3, typename Point_3>
-double quad_scaled_jacobian(const std::array<Point_3, 4>& p)
-{
-  Vector_3 n = CGAL::cross_product(Vector_3(p[0], p[2]), Vector_3(p[1], p[3]));
-  const double nl = std::sqrt(CGAL::to_double(n.squared_length()));
-  if(nl == 0.) return 0.;
-  n = n / nl;
-  double sj = 1.;
-  for(int i = 0; i < 4; ++i)
-  {
-    const Vector_3 a(p[i], p[(i + 1) % 4]);
-    const Vector_3 b(p[i], p[(i + 3) % 4]);
-    const double la = std::sqrt(CGAL::to_double(a.squared_length()));
-    const double lb = std::sqrt(CGAL::to_double(b.squared_length()));
-    if(la == 0. || lb == 0.) return 0.;
-    const double c = CGAL::to_double(n * CGAL::cross_product(a, b)) / (la * lb);
-    sj = (std::min)(sj, c);
-  }
-  return (std::max)(-1., (std::min)(1., sj));
-}
 
 // The square (rotated and scaled in the quad's mean plane) closest in the least-squares sense to the
 // quad, returned as its four corners in the quad's order. With the corners written as complex numbers
