@@ -98,6 +98,19 @@ Mesh::Property_map<E, bool> sharp_edges(Mesh& m)
 
 CGAL::Constant_property_map<V, int> no_singularity(0);
 
+// a stand-in cross field: per face the coordinate axis closest to its plane (no cross-field stage needed)
+Mesh::Property_map<F, Vector_3> stand_in_field(Mesh& m)
+{
+  auto field = m.add_property_map<F, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
+  for(F f : m.faces()) {
+    const Vector_3 nn = CGAL::Polygon_mesh_processing::compute_face_normal(f, m);
+    const Vector_3 axes[3] = {Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1)};
+    double best = 2.;
+    for(const Vector_3& a : axes) if(std::abs(a * nn) < best) { best = std::abs(a * nn); field[f] = a; }
+  }
+  return field;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(layout)
@@ -332,10 +345,13 @@ BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
   BOOST_TEST(s.layout.patches == 2u);
   BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   BOOST_TEST(s.layout.quality_patches == 2u);
-  BOOST_TEST(s.rounds.size() == 4u);
-  BOOST_TEST(s.rounds[1].name == "convexity");
-  BOOST_TEST(s.rounds[1].paths == 1u);
-  BOOST_TEST(s.report()["rounds"].size() == 4u);
+  const std::vector<std::string> names{"features", "convexity", "loops", "border_to_border", "recursion", "last_resort"};
+  BOOST_TEST(s.rounds.size() == names.size());
+  for(std::size_t i = 0; i < names.size() && i < s.rounds.size(); ++i) BOOST_TEST(s.rounds[i].name == names[i]);
+  BOOST_TEST(s.rounds[1].paths >= 1u);
+  // after the clean-up only the feature and its continuation remain
+  BOOST_TEST(s.layout.paths == 2u);
+  BOOST_TEST(s.report()["rounds"].size() == names.size());
 
   // the box: the features alone are a valid layout, nothing is added
   Mesh b = box(3);
@@ -354,13 +370,7 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   auto feature = sharp_edges(m);
   // stand-in field (see fandisk_features_and_tracing) so that this test does not depend on the cross-field
   // stage; the integrator should switch it to compute_cross_field
-  auto field = m.add_property_map<F, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
-  for(F f : m.faces()) {
-    const Vector_3 nn = CGAL::Polygon_mesh_processing::compute_face_normal(f, m);
-    const Vector_3 axes[3] = {Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1)};
-    double best = 2.;
-    for(const Vector_3& a : axes) if(std::abs(a * nn) < best) { best = std::abs(a * nn); field[f] = a; }
-  }
+  auto field = stand_in_field(m);
   Layout layout(m, field, no_singularity);
   const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, feature, layout);
   std::cerr << "[layout test] fandisk rounds: " << s.layout.valid_patches << "/" << s.layout.patches << " valid, "
@@ -381,6 +391,83 @@ BOOST_AUTO_TEST_CASE(bad_input)
   p.directions = {Vector_3(1, 0, 0)};
   BOOST_CHECK_THROW(layout.add_path(p), std::invalid_argument);
   BOOST_CHECK_THROW(layout.remove_path(3), std::invalid_argument);
+}
+
+// The local update of a candidate (preview + add) must give the same patches as a full rebuild, and the
+// incrementally updated graph G the same traces as a graph built from scratch.
+BOOST_AUTO_TEST_CASE(local_updates_match_a_full_rebuild)
+{
+  Mesh m;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("fandisk.off"), m));
+  auto feature = sharp_edges(m);
+  auto field = stand_in_field(m);
+  Layout layout(m, field, no_singularity);
+  layout.add_feature_paths(feature);
+  std::vector<Layout::Node> ends;
+  auto boundary_ends = [&] {
+    ends.clear();
+    for(V v : m.vertices()) if(layout.is_on_cut(v)) for(int k = 0; k < 4; ++k) ends.push_back(Layout::Node{v, k});
+  };
+  boundary_ends();
+  std::size_t added = 0, compared = 0;
+  for(V v : m.vertices()) {
+    if(added == 12) break;
+    if(std::size_t(v) % 97 != 0 || layout.is_on_cut(v)) continue;
+    auto c = layout.trace(Layout::Node{v, 0}, ends);
+    if(!c || layout.crosses_paths_tangentially(*c)) continue;
+    const std::size_t before = layout.number_of_patches();
+    auto change = layout.preview_add_path(*c);
+    BOOST_TEST(layout.number_of_patches() == before); // a preview changes nothing
+    layout.add_path(*c, std::move(change));
+    ++added;
+    // the same layout rebuilt from scratch
+    Layout fresh(m, field, no_singularity);
+    for(std::size_t id : layout.path_ids()) fresh.add_path(layout.path(id));
+    BOOST_REQUIRE(fresh.number_of_patches() == layout.number_of_patches());
+    std::map<std::vector<std::size_t>, Layout::Condition> a, b;
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p) {
+      std::vector<std::size_t> fa, fb;
+      for(F f : layout.patch(p).faces) fa.push_back(std::size_t(f));
+      for(F f : fresh.patch(p).faces) fb.push_back(std::size_t(f));
+      a[fa] = layout.quality(p);
+      b[fb] = fresh.quality(p);
+    }
+    BOOST_TEST((a == b));
+    // traces on the incrementally updated G and on a fresh G agree
+    boundary_ends();
+    for(V w : m.vertices()) {
+      if(std::size_t(w) % 211 != 0 || layout.is_on_cut(w)) continue;
+      auto t1 = layout.trace(Layout::Node{w, 1}, ends);
+      auto t2 = fresh.trace(Layout::Node{w, 1}, ends);
+      BOOST_TEST(bool(t1) == bool(t2));
+      if(t1 && t2) { BOOST_TEST((t1->vertices == t2->vertices)); ++compared; }
+    }
+  }
+  BOOST_TEST(added == 12u);
+  BOOST_TEST(compared > 20u);
+  // removing paths through the local update gives back the feature layout
+  const auto ids = layout.path_ids();
+  for(auto it = ids.rbegin(); it != ids.rbegin() + 12; ++it) layout.remove_path(*it, layout.preview_remove_path(*it));
+  Layout features_only(m, field, no_singularity);
+  features_only.add_feature_paths(feature);
+  BOOST_TEST(layout.number_of_patches() == features_only.number_of_patches());
+}
+
+// A closed mesh with no feature line: the looped-paths round (and, if needed, the last resort) must cut it
+// into disks; every feature-free patch is valid or at worst not convex, never a sphere or an annulus.
+BOOST_AUTO_TEST_CASE(closed_featureless_mesh_is_cut_into_disks)
+{
+  Mesh m;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("spot.off"), m));
+  auto feature = m.add_property_map<E, bool>("e:none", false).first;
+  auto field = stand_in_field(m);
+  Layout layout(m, field, no_singularity);
+  const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, feature, layout);
+  BOOST_TEST(s.rounds[2].name == "loops");
+  BOOST_TEST(s.rounds[2].paths > 0u);
+  BOOST_TEST(s.layout.patches > 10u);
+  for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(layout.validity(p) != Layout::NOT_A_DISK);
+  BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

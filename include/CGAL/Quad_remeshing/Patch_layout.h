@@ -312,6 +312,44 @@ public:
     dirty_ = graph_dirty_ = true;
   }
 
+  /// The patches that replace some patches of the layout when paths are added or removed (see
+  /// `preview_add_path()`): `old_patches` are the ids of the patches that change, `new_patches` what they
+  /// become. Only those patches are rebuilt, so trying a candidate path costs time in the size of the
+  /// patches it touches, not of the mesh.
+  struct Patch_change
+  {
+    std::vector<std::size_t> old_patches;
+    std::vector<Patch> new_patches;
+  };
+
+  /// the change the path `p` would make if it were added (the layout is left as it is)
+  Patch_change preview_add_path(const Path& p) { return preview(edge_ids(p), +1); }
+
+  /// the change removing the path `id` would make (the layout is left as it is)
+  Patch_change preview_remove_path(std::size_t id)
+  {
+    if(id >= paths_.size() || !alive_[id]) throw std::invalid_argument("Patch_layout::preview_remove_path: no such path");
+    return preview(edge_ids(paths_[id]), -1);
+  }
+
+  /// adds the path `p` whose change `c` was computed by `preview_add_path(p)` on the current layout, updating
+  /// only the patches it touches; returns the path id. The first new patches take the ids of the old ones.
+  std::size_t add_path(Path p, Patch_change c)
+  {
+    update();
+    const std::size_t id = add_path(std::move(p));
+    apply(std::move(c));
+    return id;
+  }
+
+  /// removes the path `id` whose change `c` was computed by `preview_remove_path(id)` on the current layout
+  void remove_path(std::size_t id, Patch_change c)
+  {
+    update();
+    remove_path(id);
+    apply(std::move(c));
+  }
+
   /// ids of the paths in the layout, in insertion order
   std::vector<std::size_t> path_ids() const
   {
@@ -326,9 +364,13 @@ public:
   bool is_cut(edge_descriptor e) const { return edge_paths_[eindex_.at(e)] > 0 || is_border(e, tm_); }
 
   /// the patches
-  const std::vector<Patch>& patches() const { update(); return patches_; }
+  const std::vector<Patch>& patches() const { update_arcs(); return patches_; }
+  /// the patch `p`, without its `sides` (filled by `patches()` only: they need the arcs, which are global)
+  const Patch& patch(std::size_t p) const { update(); return patches_.at(p); }
+  /// the number of patches
+  std::size_t number_of_patches() const { update(); return patches_.size(); }
   /// the arcs
-  const std::vector<Arc>& arcs() const { update(); return arcs_; }
+  const std::vector<Arc>& arcs() const { update_arcs(); return arcs_; }
   /// the patch of `f`
   std::size_t patch_id(face_descriptor f) const { update(); return face_patch_[findex_.at(f)]; }
 
@@ -343,7 +385,13 @@ public:
   /// the first validity condition (disk, convex, 3 to 6 corners) the patch `p` fails, `SATISFIED` if none
   Condition validity(std::size_t p) const
   {
-    const Patch& P = patches().at(p);
+    update();
+    return validity(patches_.at(p));
+  }
+
+  /// the first validity condition the patch `P` (of this layout or of a `Patch_change`) fails
+  Condition validity(const Patch& P) const
+  {
     if(P.loops.size() != 1 || P.euler_characteristic != 1) return NOT_A_DISK;
     for(Turn t : P.turns[0]) if(t == LEFT_TURN || t == U_TURN) return NOT_CONVEX;
     if(P.corners.size() < 3 || P.corners.size() > 6) return BAD_VALENCE;
@@ -354,9 +402,15 @@ public:
   /// sides, at most one, none in a 4-sided patch) the valid patch `p` fails, `SATISFIED` if none
   Condition quality(std::size_t p) const
   {
-    const Condition v = validity(p);
+    update();
+    return quality(patches_.at(p));
+  }
+
+  /// the first quality condition the patch `P` (of this layout or of a `Patch_change`) fails
+  Condition quality(const Patch& P) const
+  {
+    const Condition v = validity(P);
     if(v != SATISFIED) return v;
-    const Patch& P = patches_[p];
     const std::vector<double>& e = P.side_lengths;
     const std::size_t n = e.size();
     const double tol = *std::min_element(e.begin(), e.end());
@@ -440,6 +494,42 @@ public:
     return false;
   }
 
+  /// whether the path `c` crosses a path of the layout tangentially (see `cross_tangentially()`): the same
+  /// test against every path at once, in time linear in the length of `c`
+  bool crosses_paths_tangentially(const Path& c) const
+  {
+    auto dir = [&](std::size_t v, std::size_t w) {
+      return 1u << internal::closest_direction(vframes_[v], Vector_3(points_[w] - points_[v]));
+    };
+    auto leaving = [&](std::size_t v) {
+      unsigned bits = 0;
+      for(halfedge_descriptor h : halfedges_around_source(verts_[v], tm_))
+        if(edge_paths_[eindex_.at(edge(h, tm_))] > 0) bits |= dir(v, vindex_.at(target(h, tm_)));
+      return bits;
+    };
+    for(std::size_t i = 0; i + 1 < c.vertices.size(); ++i) {
+      const auto e = edge(c.vertices[i], c.vertices[i + 1], tm_);
+      if(!e.second || edge_paths_[eindex_.at(e.first)] > 0) return true;
+      const std::size_t x = vindex_.at(c.vertices[i]), y = vindex_.at(c.vertices[i + 1]);
+      if(leaving(x) & dir(x, y)) return true;
+      if(leaving(y) & dir(y, x)) return true;
+    }
+    return false;
+  }
+
+  /// the position of `v`
+  const Point_3& point(vertex_descriptor v) const { return points_[vindex_.at(v)]; }
+  /// the index of `v` (0 .. number of vertices - 1)
+  std::size_t vertex_index(vertex_descriptor v) const { return vindex_.at(v); }
+  /// whether `v` is a singularity of the field (it has no node in G)
+  bool is_singular(vertex_descriptor v) const { return singular_[vindex_.at(v)] != 0; }
+  /// whether a path or the mesh border passes through `v`
+  bool is_on_cut(vertex_descriptor v) const
+  {
+    for(halfedge_descriptor h : halfedges_around_target(v, tm_)) if(is_cut(edge(h, tm_))) return true;
+    return false;
+  }
+
   /// the quantization problem in neutral form: per patch its sides as ordered arc ids (cyclic order);
   /// the arc lengths are `arcs()[id].length`
   std::vector<std::vector<std::vector<std::size_t>>> quantization_sides() const
@@ -452,7 +542,7 @@ public:
   /// the figures of the layout
   Patch_layout_statistics statistics() const
   {
-    update();
+    update_arcs();
     Patch_layout_statistics s;
     s.patches = patches_.size();
     for(std::size_t p = 0; p < patches_.size(); ++p) {
@@ -493,6 +583,73 @@ public:
   }
 
 private:
+  std::vector<std::size_t> edge_ids(const Path& p) const
+  {
+    std::vector<std::size_t> ids;
+    for(std::size_t i = 0; i + 1 < p.vertices.size(); ++i) {
+      auto e = edge(p.vertices[i], p.vertices[i + 1], tm_);
+      if(!e.second) throw std::invalid_argument("Patch_layout: consecutive path vertices are not adjacent");
+      ids.push_back(eindex_.at(e.first));
+    }
+    return ids;
+  }
+
+  // Patches touched by changing the path count of `ids` by `delta`, rebuilt with that change applied: a
+  // flood fill over the faces of the touched patches only (added cuts only split them, removed cuts only
+  // join them, so no other face can be reached).
+  Patch_change preview(const std::vector<std::size_t>& ids, int delta)
+  {
+    update();
+    Patch_change c;
+    for(std::size_t e : ids)
+      for(halfedge_descriptor h : {halfedge(edges_[e], tm_), opposite(halfedge(edges_[e], tm_), tm_)})
+        if(!is_border(h, tm_)) c.old_patches.push_back(face_patch_[findex_.at(face(h, tm_))]);
+    std::sort(c.old_patches.begin(), c.old_patches.end());
+    c.old_patches.erase(std::unique(c.old_patches.begin(), c.old_patches.end()), c.old_patches.end());
+    for(std::size_t e : ids) edge_paths_[e] += delta;
+    scratch_label_.resize(faces_.size(), std::size_t(-1));
+    std::vector<std::size_t> seeds;
+    for(std::size_t p : c.old_patches) for(face_descriptor f : patches_[p].faces) seeds.push_back(findex_.at(f));
+    std::sort(seeds.begin(), seeds.end());
+    for(std::size_t s : seeds) {
+      if(scratch_label_[s] != std::size_t(-1)) continue;
+      c.new_patches.emplace_back();
+      c.new_patches.back().faces = flood(s, c.new_patches.size() - 1, scratch_label_);
+    }
+    for(Patch& P : c.new_patches) build_boundary(P);
+    for(std::size_t s : seeds) scratch_label_[s] = std::size_t(-1);
+    for(std::size_t e : ids) edge_paths_[e] -= delta;
+    return c;
+  }
+
+  // replaces the old patches of `c` by its new ones; ids stay 0..n-1 (a patch left without a slot moves
+  // into a freed one)
+  void apply(Patch_change c)
+  {
+    std::vector<std::size_t> slots = c.old_patches;
+    for(std::size_t k = 0; k < c.new_patches.size(); ++k) {
+      std::size_t id;
+      if(k < slots.size()) id = slots[k];
+      else { id = patches_.size(); patches_.emplace_back(); }
+      for(face_descriptor f : c.new_patches[k].faces) face_patch_[findex_.at(f)] = id;
+      patches_[id] = std::move(c.new_patches[k]);
+    }
+    // free the slots left over (fewer patches after a removal), filling them from the end
+    std::vector<std::size_t> freed(slots.begin() + std::min(slots.size(), c.new_patches.size()), slots.end());
+    std::sort(freed.begin(), freed.end());
+    while(!freed.empty()) {
+      const std::size_t last = patches_.size() - 1;
+      if(freed.back() == last) { patches_.pop_back(); freed.pop_back(); continue; }
+      const std::size_t hole = freed.front();
+      freed.erase(freed.begin());
+      for(face_descriptor f : patches_[last].faces) face_patch_[findex_.at(f)] = hole;
+      patches_[hole] = std::move(patches_[last]);
+      patches_.pop_back();
+    }
+    dirty_ = false;
+    arcs_dirty_ = true;
+  }
+
   void build_vertex_frames()
   {
     vframes_.assign(verts_.size(), std::array<Vector_3, 4>());
@@ -527,26 +684,51 @@ private:
     for(std::size_t i = 0; i < edges_.size(); ++i) cut[i] = is_cut(edges_[i]);
     graph_dirty_ = false;
     if(cut == graph_cut_) return;
-    graph_cut_.swap(cut);
     // kept as members: the graph refers to them when it computes the arcs of a start node
     std::vector<std::vector<std::size_t>>& blocked = graph_blocked_;
     std::vector<unsigned char>& mask = graph_mask_;
-    blocked.assign(verts_.size(), {});
-    mask.assign(verts_.size(), 0);
-    for(std::size_t i = 0; i < edges_.size(); ++i) {
-      if(!is_cut(edges_[i])) continue;
-      const std::size_t a = vindex_.at(source(edges_[i], tm_)), b = vindex_.at(target(edges_[i], tm_));
-      blocked[a].push_back(b);
-      blocked[b].push_back(a);
-      const Vector_3 e = points_[b] - points_[a];
-      mask[a] |= (unsigned char)(1u << (internal::closest_direction(vframes_[a], e) % 2));
-      mask[b] |= (unsigned char)(1u << (internal::closest_direction(vframes_[b], e) % 2));
+    // blocked neighbours and tangent classes at vertex i, from its cut edges
+    auto set_vertex = [&](std::size_t i) {
+      blocked[i].clear();
+      mask[i] = 0;
+      for(halfedge_descriptor h : halfedges_around_target(verts_[i], tm_)) {
+        if(!cut[eindex_.at(edge(h, tm_))]) continue;
+        const std::size_t j = vindex_.at(source(h, tm_));
+        blocked[i].push_back(j);
+        mask[i] |= (unsigned char)(1u << (internal::closest_direction(vframes_[i], Vector_3(points_[j] - points_[i])) % 2));
+      }
+    };
+    if(graph_cut_.empty()) {
+      blocked.assign(verts_.size(), {});
+      mask.assign(verts_.size(), 0);
+      for(std::size_t i = 0; i < verts_.size(); ++i) set_vertex(i);
+      std::vector<char>& excluded = graph_excluded_;
+      excluded = singular_;
+      for(std::size_t i = 0; i < verts_.size(); ++i)
+        if(vframes_[i][0] == Vector_3(0, 0, 0)) excluded[i] = 1; // no field there
+      graph_.build(vframes_, nbrs_, points_, excluded, blocked, mask, length_weight_);
+      graph_cut_.swap(cut);
+      return;
     }
-    std::vector<char>& excluded = graph_excluded_;
-    excluded = singular_;
-    for(std::size_t i = 0; i < verts_.size(); ++i)
-      if(vframes_[i][0] == Vector_3(0, 0, 0)) excluded[i] = 1; // no field there
-    graph_.build(vframes_, nbrs_, points_, excluded, blocked, mask, length_weight_);
+    // incremental: only the nodes within two rings of a vertex whose cut edges changed get new arcs
+    std::vector<std::size_t> changed;
+    for(std::size_t e = 0; e < edges_.size(); ++e)
+      if(cut[e] != graph_cut_[e]) {
+        changed.push_back(vindex_.at(source(edges_[e], tm_)));
+        changed.push_back(vindex_.at(target(edges_[e], tm_)));
+      }
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    for(std::size_t i : changed) set_vertex(i); // reads the new cut state
+    graph_cut_.swap(cut);
+    std::vector<std::size_t> ring = changed;
+    for(int r = 0; r < 2; ++r) {
+      const std::size_t n = ring.size();
+      for(std::size_t k = 0; k < n; ++k) ring.insert(ring.end(), nbrs_[ring[k]].begin(), nbrs_[ring[k]].end());
+      std::sort(ring.begin(), ring.end());
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    }
+    graph_.rebuild_nodes(ring);
   }
 
   // the next boundary halfedge of the loop after `h`, turning around target(h) inside the patch
@@ -608,83 +790,130 @@ private:
   }
 
   void update() const { if(dirty_) const_cast<Patch_layout*>(this)->rebuild(); }
+  void update_arcs() const
+  {
+    update();
+    if(arcs_dirty_) const_cast<Patch_layout*>(this)->build_arcs();
+  }
+
+  // The faces reachable from face index `s` without crossing a cut edge, all labelled `id` in `label`
+  // (whose unlabelled entries are -1), returned in ascending index order (deterministic patch contents).
+  std::vector<face_descriptor> flood(std::size_t s, std::size_t id, std::vector<std::size_t>& label) const
+  {
+    std::vector<std::size_t> ids{s}, stack{s};
+    label[s] = id;
+    while(!stack.empty()) {
+      const std::size_t fi = stack.back();
+      stack.pop_back();
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(faces_[fi], tm_), tm_)) {
+        if(is_cut(edge(h, tm_))) continue;
+        const std::size_t fj = findex_.at(face(opposite(h, tm_), tm_));
+        if(label[fj] == std::size_t(-1)) { label[fj] = id; stack.push_back(fj); ids.push_back(fj); }
+      }
+    }
+    std::sort(ids.begin(), ids.end());
+    std::vector<face_descriptor> result;
+    result.reserve(ids.size());
+    for(std::size_t i : ids) result.push_back(faces_[i]);
+    return result;
+  }
+
+  // Boundary loops, turns, corners, side lengths, inner singularities and Euler characteristic of a patch
+  // whose faces are set. Only the patch's own faces and cut edges are looked at, so a patch can be built
+  // for a hypothetical set of cut edges (see `preview()`).
+  void build_boundary(Patch& P) const
+  {
+    std::vector<char>& visited = scratch_halfedge_;
+    std::vector<char>& on_loop = scratch_on_loop_;
+    std::vector<char>& seen = scratch_seen_;
+    visited.resize(num_halfedges(tm_), 0);
+    on_loop.resize(verts_.size(), 0);
+    seen.resize(verts_.size(), 0);
+    std::size_t boundary_halfedges = 0;
+    for(face_descriptor f : P.faces)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) {
+        if(!is_cut(edge(h, tm_)) || visited[hindex_[h]]) continue;
+        std::vector<halfedge_descriptor> loop;
+        std::vector<Turn> turns;
+        halfedge_descriptor g = h;
+        do {
+          visited[hindex_[g]] = 1;
+          loop.push_back(g);
+          turns.push_back(classify(g));
+          on_loop[vindex_[target(g, tm_)]] = 1;
+          g = next_boundary(g);
+        } while(g != h && loop.size() <= 3 * faces_.size());
+        boundary_halfedges += loop.size();
+        P.loops.push_back(std::move(loop));
+        P.turns.push_back(std::move(turns));
+      }
+    // Euler characteristic of the patch cut open along its boundary: every loop position is a vertex
+    std::vector<std::size_t> touched;
+    for(face_descriptor f : P.faces)
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_))
+        if(!seen[vindex_[v]]) { seen[vindex_[v]] = 1; touched.push_back(vindex_[v]); }
+    std::sort(touched.begin(), touched.end());
+    std::size_t interior = 0;
+    for(std::size_t i : touched)
+      if(!on_loop[i]) {
+        ++interior;
+        if(singular_[i]) P.singularities.push_back(verts_[i]);
+      }
+    for(std::size_t i : touched) seen[i] = on_loop[i] = 0;
+    for(const auto& loop : P.loops) for(halfedge_descriptor g : loop) visited[hindex_[g]] = 0;
+    const long V = long(interior + boundary_halfedges);
+    const long E = long((3 * P.faces.size() - boundary_halfedges) / 2 + boundary_halfedges);
+    P.euler_characteristic = int(V - E + long(P.faces.size()));
+    for(std::size_t i = 0; !P.loops.empty() && i < P.loops[0].size(); ++i)
+      if(P.turns[0][i] != STRAIGHT) P.corners.push_back(target(P.loops[0][i], tm_));
+    // side lengths of the first loop, measured along the field of the patch's own faces
+    if(P.loops.empty()) return;
+    const auto& L = P.loops[0];
+    const auto& T = P.turns[0];
+    const std::size_t start = first_side_start(T);
+    double len = 0.;
+    for(std::size_t j = 0; j < L.size(); ++j) {
+      const std::size_t i = (start + j) % L.size();
+      const auto& dirs = frames_.dirs[findex_.at(face(L[i], tm_))];
+      const Vector_3 e = vec(L[i]);
+      len += std::abs(CGAL::to_double(e * dirs[internal::closest_direction(dirs, e)]));
+      if(T[i] != STRAIGHT || j + 1 == L.size()) { P.side_lengths.push_back(len); len = 0.; }
+    }
+  }
+
+  // sides start after a corner so that the loop's origin does not split a side
+  static std::size_t first_side_start(const std::vector<Turn>& T)
+  {
+    for(std::size_t i = 0; i < T.size(); ++i) if(T[i] != STRAIGHT) return (i + 1) % T.size();
+    return 0;
+  }
 
   void rebuild()
   {
     CGAL::Real_timer timer;
     timer.start();
-    // 1. patches: flood fill across edges that are not cut
     face_patch_.assign(faces_.size(), std::size_t(-1));
     patches_.clear();
     for(std::size_t s = 0; s < faces_.size(); ++s) {
       if(face_patch_[s] != std::size_t(-1)) continue;
-      const std::size_t pid = patches_.size();
       patches_.emplace_back();
-      std::vector<std::size_t> stack{s};
-      face_patch_[s] = pid;
-      while(!stack.empty()) {
-        const std::size_t fi = stack.back();
-        stack.pop_back();
-        patches_[pid].faces.push_back(faces_[fi]);
-        for(halfedge_descriptor h : halfedges_around_face(halfedge(faces_[fi], tm_), tm_)) {
-          if(is_cut(edge(h, tm_))) continue;
-          const std::size_t fj = findex_.at(face(opposite(h, tm_), tm_));
-          if(face_patch_[fj] == std::size_t(-1)) { face_patch_[fj] = pid; stack.push_back(fj); }
-        }
-      }
-      std::vector<std::size_t> ids;
-      for(face_descriptor f : patches_[pid].faces) ids.push_back(findex_[f]);
-      std::sort(ids.begin(), ids.end());
-      for(std::size_t k = 0; k < ids.size(); ++k) patches_[pid].faces[k] = faces_[ids[k]];
+      patches_.back().faces = flood(s, patches_.size() - 1, face_patch_);
     }
-    // 2. boundary loops and turns
+    for(Patch& P : patches_) build_boundary(P);
+    dirty_ = false;
+    arcs_dirty_ = true;
+    rebuild_seconds_ = timer.time();
+  }
+
+  // Arcs (maximal chains of cut edges broken at corners and at vertices of cut degree other than 2), the
+  // arcs of every side and the T-junctions: global, built when asked for.
+  void build_arcs()
+  {
     std::vector<char> corner(verts_.size(), 0);
-    std::vector<char> visited(num_halfedges(tm_), 0);
-    std::vector<char> on_loop(verts_.size(), 0), seen(verts_.size(), 0);
-    for(Patch& P : patches_) {
-      std::vector<std::size_t> touched; // vertices of the patch, to reset the flags
-      std::size_t boundary_halfedges = 0;
-      for(face_descriptor f : P.faces)
-        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) {
-          if(!is_cut(edge(h, tm_)) || visited[hindex_[h]]) continue;
-          std::vector<halfedge_descriptor> loop;
-          std::vector<Turn> turns;
-          halfedge_descriptor g = h;
-          do {
-            visited[hindex_[g]] = 1;
-            loop.push_back(g);
-            turns.push_back(classify(g));
-            on_loop[vindex_[target(g, tm_)]] = 1;
-            g = next_boundary(g);
-          } while(g != h && loop.size() <= 3 * faces_.size());
-          boundary_halfedges += loop.size();
-          P.loops.push_back(std::move(loop));
-          P.turns.push_back(std::move(turns));
-        }
-      // Euler characteristic of the patch cut open along its boundary: every loop position is a vertex
-      for(face_descriptor f : P.faces)
-        for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_))
-          if(!seen[vindex_[v]]) { seen[vindex_[v]] = 1; touched.push_back(vindex_[v]); }
-      std::sort(touched.begin(), touched.end());
-      std::size_t interior = 0;
-      for(std::size_t i : touched) {
-        if(!on_loop[i]) {
-          ++interior;
-          if(singular_[i]) P.singularities.push_back(verts_[i]);
-        }
-      }
-      for(std::size_t i : touched) seen[i] = on_loop[i] = 0;
-      const long V = long(interior + boundary_halfedges);
-      const long E = long((3 * P.faces.size() - boundary_halfedges) / 2 + boundary_halfedges);
-      P.euler_characteristic = int(V - E + long(P.faces.size()));
+    for(const Patch& P : patches_)
       for(std::size_t l = 0; l < P.loops.size(); ++l)
         for(std::size_t i = 0; i < P.loops[l].size(); ++i)
-          if(P.turns[l][i] != STRAIGHT) {
-            if(l == 0) P.corners.push_back(target(P.loops[l][i], tm_));
-            corner[vindex_.at(target(P.loops[l][i], tm_))] = 1;
-          }
-    }
-    // 3. arcs: maximal chains of cut edges broken at corners and at vertices of cut degree other than 2
+          if(P.turns[l][i] != STRAIGHT) corner[vindex_.at(target(P.loops[l][i], tm_))] = 1;
     std::vector<int> cut_degree(verts_.size(), 0);
     for(std::size_t i = 0; i < edges_.size(); ++i)
       if(is_cut(edges_[i])) { ++cut_degree[vindex_.at(source(edges_[i], tm_))]; ++cut_degree[vindex_.at(target(edges_[i], tm_))]; }
@@ -726,35 +955,31 @@ private:
       }
       arcs_.push_back(std::move(a));
     }
-    // 4. sides of the first loop: arcs from one corner to the next
+    // sides of the first loop: arcs from one corner to the next (the same split as the side lengths)
     t_junctions_ = 0;
     std::vector<char> tj(verts_.size(), 0);
     for(Patch& P : patches_) {
+      P.sides.clear();
       if(P.loops.empty()) continue;
       const auto& L = P.loops[0];
       const auto& T = P.turns[0];
-      std::size_t start = 0; // start after a corner so that sides are not split by the loop's origin
-      for(std::size_t i = 0; i < L.size(); ++i) if(T[i] != STRAIGHT) { start = (i + 1) % L.size(); break; }
+      const std::size_t start = first_side_start(T);
       std::vector<std::size_t> side;
-      double len = 0.;
       std::size_t last_arc = std::size_t(-1);
       for(std::size_t j = 0; j < L.size(); ++j) {
         const std::size_t i = (start + j) % L.size();
         const std::size_t arc = arc_of_edge_[eindex_.at(edge(L[i], tm_))];
-        if(arc != last_arc) { side.push_back(arc); len += arcs_[arc].length; last_arc = arc; }
+        if(arc != last_arc) { side.push_back(arc); last_arc = arc; }
         const std::size_t vi = vindex_.at(target(L[i], tm_));
         if(T[i] == STRAIGHT && cut_degree[vi] >= 3 && !tj[vi]) { tj[vi] = 1; ++t_junctions_; }
         if(T[i] != STRAIGHT || j + 1 == L.size()) {
           P.sides.push_back(side);
-          P.side_lengths.push_back(len);
           side.clear();
-          len = 0.;
           last_arc = std::size_t(-1);
         }
       }
     }
-    dirty_ = false;
-    rebuild_seconds_ = timer.time();
+    arcs_dirty_ = false;
   }
 
   const TriangleMesh& tm_;
@@ -791,6 +1016,10 @@ private:
   std::vector<char> graph_cut_; // the cut edges G was built for
   bool graph_dirty_ = true;
   bool dirty_ = true;
+  bool arcs_dirty_ = true;
+  // scratch flags of build_boundary(), all zero between calls
+  mutable std::vector<char> scratch_halfedge_, scratch_on_loop_, scratch_seen_;
+  std::vector<std::size_t> scratch_label_; // face labels of preview(), all -1 between calls
   std::vector<std::size_t> face_patch_;
   std::vector<Patch> patches_;
   std::vector<Arc> arcs_;

@@ -12,11 +12,21 @@
 
 #include <CGAL/Real_timer.h>
 
+#include <functional>
+#include <limits>
+#include <queue>
+#include <type_traits>
+#include <utility>
+
 #include <algorithm>
 #include <deque>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
+
+/// fraction of the vertices used as seeds of the looped-paths round (`double`)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(loop_sample_ratio_t, loop_sample_ratio, loop_sample_ratio)
 
 namespace CGAL {
 namespace Quad_remeshing {
@@ -62,134 +72,487 @@ struct Trace_patch_layout_statistics
 
 namespace internal {
 
+/*
+  The rounds of paper section 5.2/5.4 over a Patch_layout. Every round traces its candidates on the current
+  layout, then inserts them farthest-first (`insert_farthest_first()`), each through the acceptance rule
+  (`accept()`); the patches a candidate touches are rebuilt locally (Patch_layout::preview_add_path()), so a
+  candidate costs time in the size of those patches.
+*/
 template <typename Layout>
 class Layout_tracer
 {
 public:
   typedef typename Layout::Path Path;
   typedef typename Layout::Node Node;
+  typedef typename Layout::Patch Patch;
+  typedef typename Layout::Patch_change Patch_change;
   typedef typename Layout::vertex_descriptor vertex_descriptor;
+  typedef typename Layout::halfedge_descriptor halfedge_descriptor;
+  typedef typename Layout::face_descriptor face_descriptor;
+  typedef typename Layout::Turn Turn;
+  typedef Trace_patch_layout_statistics::Round Round;
 
-  explicit Layout_tracer(Layout& layout) : layout_(layout) {}
+  struct Candidate
+  {
+    Path path;
+    double score = 0.;
+  };
+
+  explicit Layout_tracer(Layout& layout) : layout_(layout), tm_(layout.mesh())
+  {
+    for(vertex_descriptor v : vertices(tm_)) verts_.push_back(v);
+    std::sort(verts_.begin(), verts_.end(), [&](vertex_descriptor a, vertex_descriptor b) {
+      return layout_.vertex_index(a) < layout_.vertex_index(b);
+    });
+  }
 
   std::size_t invalid_patches() const
   {
-    const auto s = layout_.statistics();
-    return s.patches - s.valid_patches;
+    std::size_t n = 0;
+    for(std::size_t p = 0; p < layout_.number_of_patches(); ++p) n += layout_.validity(p) != Layout::SATISFIED;
+    return n;
   }
+  const std::vector<std::size_t>& inserted() const { return inserted_; }
 
-  // The acceptance rule, in one place: a candidate that crosses no path of the layout tangentially is
-  // kept when it directly helps (fewer patches failing a validity condition, or more meeting the quality
-  // conditions without losing a valid one) or when it splits a patch that still fails a condition.
-  bool accept(const Path& candidate, std::size_t target_patch)
+  // The acceptance rule, in one place (paper section 5.2). A candidate that crosses no path of the layout
+  // tangentially is kept when
+  //  - it directly helps: fewer of the patches it touches fail a validity condition, or more meet the
+  //    quality conditions and none becomes invalid; or
+  //  - it splits a patch that still fails a condition, without making a valid patch invalid.
+  bool accept(const Path& candidate)
   {
-    for(std::size_t id : layout_.path_ids())
-      if(layout_.cross_tangentially(layout_.path(id), candidate)) return false;
-    const auto before = layout_.statistics();
-    const bool target_fails = layout_.quality(target_patch) != Layout::SATISFIED;
-    const std::size_t id = layout_.add_path(candidate);
-    const auto after = layout_.statistics();
-    const bool helps = (after.patches - after.valid_patches < before.patches - before.valid_patches) ||
-                       (after.valid_patches >= before.valid_patches && after.quality_patches > before.quality_patches);
-    const bool splits = target_fails && after.patches > before.patches && after.valid_patches >= before.valid_patches;
-    if(helps || splits) { inserted_.push_back(id); return true; }
-    layout_.remove_path(id);
-    return false;
-  }
-
-  // nodes at every vertex on a path or on the border, except `exclude` (a null vertex excludes none)
-  std::vector<Node> boundary_ends(vertex_descriptor exclude) const
-  {
-    std::vector<Node> ends;
-    for(vertex_descriptor v : vertices(layout_.mesh())) {
-      if(v == exclude) continue;
-      bool cut = false;
-      for(auto h : halfedges_around_target(v, layout_.mesh())) cut = cut || layout_.is_cut(edge(h, layout_.mesh()));
-      if(cut) for(int k = 0; k < 4; ++k) ends.push_back(Node{v, k});
+    if(candidate.vertices.size() < 2 || layout_.crosses_paths_tangentially(candidate)) return false;
+    Patch_change c = layout_.preview_add_path(candidate);
+    std::size_t invalid_before = 0, quality_before = 0, invalid_after = 0, quality_after = 0;
+    bool some_fails = false;
+    for(std::size_t p : c.old_patches) {
+      invalid_before += layout_.validity(p) != Layout::SATISFIED;
+      const bool q = layout_.quality(p) == Layout::SATISFIED;
+      quality_before += q;
+      some_fails = some_fails || (split_quality_failing ? !q : layout_.validity(p) != Layout::SATISFIED);
     }
-    return ends;
+    for(const Patch& P : c.new_patches) {
+      invalid_after += layout_.validity(P) != Layout::SATISFIED;
+      quality_after += layout_.quality(P) == Layout::SATISFIED;
+    }
+    // paths running within an edge of another one cut off slivers: unless every patch it makes is valid,
+    // refuse a candidate that makes new U-turns or tiny patches
+    if(invalid_after > 0) {
+      if(u_turns(c.new_patches) > u_turns_of(c.old_patches)) return false;
+      for(const Patch& P : c.new_patches) if(P.faces.size() < min_patch_faces) return false;
+    }
+    const std::size_t valid_before = c.old_patches.size() - invalid_before;
+    const std::size_t valid_after = c.new_patches.size() - invalid_after;
+    const bool breaks_validity = invalid_before == 0 && invalid_after > 0;
+    const bool helps = invalid_after < invalid_before ||
+                       (!breaks_validity && valid_after >= valid_before && quality_after > quality_before);
+    const bool splits = !breaks_validity && some_fails && c.new_patches.size() > c.old_patches.size() &&
+                        valid_after >= valid_before;
+    if(!helps && !splits) return false;
+    inserted_.push_back(layout_.add_path(candidate, std::move(c)));
+    add_to_distances(inserted_.back());
+    return true;
   }
 
-  // Candidates from the boundary vertices of patch `p` whose turn is in `turns`, in every direction that
-  // enters the patch, to the first boundary node reached.
-  std::size_t round_from_boundary(const std::vector<typename Layout::Turn>& turns, bool only_invalid,
-                                  std::size_t max_starts_per_patch, Trace_patch_layout_statistics::Round& round)
+  static constexpr std::size_t min_patch_faces = 4;
+  // whether a split of a valid patch failing a quality condition is accepted for that reason alone
+  bool split_quality_failing = true;
+  std::size_t u_turns(const std::vector<Patch>& ps) const
   {
+    std::size_t n = 0;
+    for(const Patch& P : ps) for(const auto& T : P.turns) n += std::size_t(std::count(T.begin(), T.end(), Layout::U_TURN));
+    return n;
+  }
+  std::size_t u_turns_of(const std::vector<std::size_t>& ids) const
+  {
+    std::size_t n = 0;
+    for(std::size_t p : ids) for(const auto& T : layout_.patch(p).turns) n += std::size_t(std::count(T.begin(), T.end(), Layout::U_TURN));
+    return n;
+  }
+
+  // ---- distances to the paths, for the farthest-first order (paper's "Candidate Sorting")
+
+  // graph distance (along mesh edges) of every vertex to the nearest path or border vertex
+  void reset_distances()
+  {
+    dist_.assign(verts_.size(), std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> seeds;
+    for(vertex_descriptor v : verts_) if(layout_.is_on_cut(v)) seeds.push_back(layout_.vertex_index(v));
+    relax_distances(seeds);
+  }
+  void add_to_distances(std::size_t path_id)
+  {
+    if(dist_.empty()) return;
+    std::vector<std::size_t> seeds;
+    for(vertex_descriptor v : layout_.path(path_id).vertices) seeds.push_back(layout_.vertex_index(v));
+    relax_distances(seeds);
+  }
+  void relax_distances(const std::vector<std::size_t>& seeds)
+  {
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+    for(std::size_t s : seeds) { dist_[s] = 0.; q.push({0., s}); }
+    while(!q.empty()) {
+      const Item it = q.top();
+      q.pop();
+      if(it.first > dist_[it.second]) continue;
+      const vertex_descriptor v = verts_[it.second];
+      for(halfedge_descriptor h : halfedges_around_target(v, tm_)) {
+        const std::size_t w = layout_.vertex_index(source(h, tm_));
+        const double d = it.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(v), layout_.point(verts_[w]))));
+        if(d < dist_[w]) { dist_[w] = d; q.push({d, w}); }
+      }
+    }
+  }
+  // our reading of "the largest distance from the closest edge in any picked path": the mean distance of
+  // the candidate's vertices to the paths (a minimum would be zero for every path ending on a path)
+  double score(const Path& p) const
+  {
+    double s = 0.;
+    for(vertex_descriptor v : p.vertices) s += dist_[layout_.vertex_index(v)];
+    return s / double(p.vertices.size());
+  }
+
+  // Inserts the candidates farthest-first: the candidate farthest from the paths is tried next; scores only
+  // drop as paths are inserted, so a lazily re-scored max-heap gives the exact order.
+  std::size_t insert_farthest_first(std::vector<Candidate>& candidates, Round& round)
+  {
+    round.candidates += candidates.size();
+    if(dist_.empty()) reset_distances();
+    typedef std::pair<double, std::size_t> Item; // (score, -index) ordering by score then first traced
+    auto cmp = [](const Item& a, const Item& b) { return a.first < b.first || (a.first == b.first && a.second > b.second); };
+    std::priority_queue<Item, std::vector<Item>, decltype(cmp)> heap(cmp);
+    for(std::size_t i = 0; i < candidates.size(); ++i) heap.push({score(candidates[i].path), i});
     std::size_t kept = 0;
-    std::vector<Node> ends = boundary_ends(typename Layout::vertex_descriptor());
-    for(std::size_t p = 0; p < layout_.patches().size(); ++p) {
-      const auto condition = only_invalid ? layout_.validity(p) : layout_.quality(p);
-      if(condition == Layout::SATISFIED) continue;
-      std::vector<vertex_descriptor> starts;
-      const auto& P = layout_.patches()[p];
-      for(std::size_t l = 0; l < P.loops.size(); ++l)
-        for(std::size_t i = 0; i < P.loops[l].size(); ++i)
-          if(std::find(turns.begin(), turns.end(), P.turns[l][i]) != turns.end())
-            starts.push_back(target(P.loops[l][i], layout_.mesh()));
-      // spread the starts along the boundary when there are many
-      if(starts.size() > max_starts_per_patch) {
-        std::vector<vertex_descriptor> spread;
-        for(std::size_t i = 0; i < max_starts_per_patch; ++i) spread.push_back(starts[i * starts.size() / max_starts_per_patch]);
-        starts.swap(spread);
-      }
-      // patch ids change when a path is kept: the next patch is looked at in the next repetition
-      bool accepted = false;
-      for(vertex_descriptor v : starts) {
-        for(int k = 0; k < 4; ++k) {
-          auto c = layout_.trace(Node{v, k}, ends);
-          ++round.candidates;
-          if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back()) continue;
-          // the candidate must start into patch p
-          const auto e = edge(c->vertices[0], c->vertices[1], layout_.mesh()).first;
-          const auto h = halfedge(e, layout_.mesh());
-          if(is_border(h, layout_.mesh()) || layout_.patch_id(face(h, layout_.mesh())) != p) continue;
-          if(accept(*c, p)) { ++kept; accepted = true; break; }
-        }
-        if(accepted) break;
-      }
-      if(accepted) ends = boundary_ends(typename Layout::vertex_descriptor());
+    while(!heap.empty()) {
+      Item top = heap.top();
+      heap.pop();
+      const double now = score(candidates[top.second].path);
+      if(now < top.first && !heap.empty() && now < heap.top().first) { heap.push({now, top.second}); continue; }
+      if(accept(candidates[top.second].path)) ++kept;
     }
     round.paths += kept;
     return kept;
   }
 
-  // Removes inserted paths in reverse insertion order when no validity or quality count drops.
+  // ---- candidate generation
+
+  // whether the first edge of `p` enters patch `patch` (any patch when `patch` is -1)
+  bool enters(const Path& p, std::size_t patch) const
+  {
+    if(patch == std::size_t(-1)) return true;
+    const auto e = edge(p.vertices[0], p.vertices[1], tm_).first;
+    for(halfedge_descriptor h : {halfedge(e, tm_), opposite(halfedge(e, tm_), tm_)})
+      if(!is_border(h, tm_) && layout_.patch_id(face(h, tm_)) == patch) return true;
+    return false;
+  }
+
+  // nodes at the boundary vertices of the patches `ps` (all patches when `ps` is empty), every direction
+  std::vector<Node> boundary_nodes(const std::vector<std::size_t>& ps) const
+  {
+    std::vector<Node> ends;
+    if(ps.empty()) {
+      for(vertex_descriptor v : verts_)
+        if(layout_.is_on_cut(v)) for(int k = 0; k < 4; ++k) ends.push_back(Node{v, k});
+      return ends;
+    }
+    for(std::size_t p : ps)
+      for(const auto& loop : layout_.patch(p).loops)
+        for(halfedge_descriptor h : loop) for(int k = 0; k < 4; ++k) ends.push_back(Node{target(h, tm_), k});
+    return ends;
+  }
+
+  // a start: a boundary vertex of a patch and the patch its candidates must enter
+  struct Start { vertex_descriptor v; std::size_t patch; };
+
+  // boundary vertices with a turn in `turns` of the patches failing (validity when `only_invalid`, else
+  // quality); `patch` restricts to one patch; at most `per_patch` per patch, spread along the loops
+  std::vector<Start> boundary_starts(const std::vector<Turn>& turns, bool only_invalid, std::size_t per_patch,
+                                     std::size_t patch = std::size_t(-1)) const
+  {
+    std::vector<Start> starts;
+    for(std::size_t p = 0; p < layout_.number_of_patches(); ++p) {
+      if(patch != std::size_t(-1) && p != patch) continue;
+      const auto condition = only_invalid ? layout_.validity(p) : layout_.quality(p);
+      if(condition == Layout::SATISFIED) continue;
+      std::vector<vertex_descriptor> vs;
+      for(std::size_t l = 0; l < layout_.patch(p).loops.size(); ++l)
+        for(std::size_t i = 0; i < layout_.patch(p).loops[l].size(); ++i)
+          if(std::find(turns.begin(), turns.end(), layout_.patch(p).turns[l][i]) != turns.end())
+            vs.push_back(target(layout_.patch(p).loops[l][i], tm_));
+      const std::size_t n = (std::min)(vs.size(), per_patch);
+      for(std::size_t i = 0; i < n; ++i) starts.push_back(Start{vs[i * vs.size() / n], p});
+    }
+    return starts;
+  }
+
+  // traces from every direction of every start that enters its patch, to the first node of `ends`
+  // (`opposite_ends`: to the nodes of the other starts in the opposite direction instead)
+  std::vector<Candidate> trace_from(const std::vector<Start>& starts, const std::vector<Node>& ends, bool opposite_ends)
+  {
+    std::vector<Candidate> out;
+    for(const Start& s : starts) {
+      std::vector<Node> e;
+      if(opposite_ends) {
+        for(const Start& t : starts)
+          if(t.v != s.v) for(int k = 0; k < 4; ++k) e.push_back(Node{t.v, k});
+      }
+      for(int k = 0; k < 4; ++k) {
+        auto c = layout_.trace(Node{s.v, k}, opposite_ends ? e : ends);
+        if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back() || !enters(*c, s.patch)) continue;
+        out.push_back(Candidate{std::move(*c), 0.});
+      }
+    }
+    return out;
+  }
+
+  // Interior vertices spread evenly (farthest-point sampling on the distance to the paths, which gives a
+  // blue-noise sample away from the paths), `count` of them, inside patch `patch` (any when -1).
+  std::vector<vertex_descriptor> interior_samples(std::size_t count, std::size_t patch)
+  {
+    std::vector<vertex_descriptor> samples;
+    if(dist_.empty()) reset_distances();
+    std::vector<double> d = dist_;
+    for(std::size_t n = 0; n < count; ++n) {
+      std::size_t best = std::size_t(-1);
+      for(std::size_t i = 0; i < verts_.size(); ++i) {
+        const vertex_descriptor v = verts_[i];
+        if(d[i] <= 0. || layout_.is_singular(v) || layout_.is_on_cut(v)) continue;
+        if(patch != std::size_t(-1) && layout_.patch_id(face(halfedge(v, tm_), tm_)) != patch) continue;
+        if(best == std::size_t(-1) || d[i] > d[best]) best = i;
+      }
+      if(best == std::size_t(-1)) break;
+      samples.push_back(verts_[best]);
+      std::swap(d, dist_);
+      relax_distances({best}); // on the copy: the samples are not paths
+      std::swap(d, dist_);
+    }
+    return samples;
+  }
+
+  // two loops per sample (the two field directions; the other two trace the same loops backwards)
+  std::vector<Candidate> trace_loops(const std::vector<vertex_descriptor>& samples, const std::vector<Node>& extra_ends)
+  {
+    std::vector<Candidate> out;
+    for(vertex_descriptor v : samples)
+      for(int k = 0; k < 2; ++k) {
+        std::vector<Node> ends = extra_ends;
+        ends.push_back(Node{v, k});
+        auto c = layout_.trace(Node{v, k}, ends);
+        if(!c || c->vertices.size() < 3) continue;
+        out.push_back(Candidate{std::move(*c), 0.});
+      }
+    return out;
+  }
+
+  // ---- last resort: cuts that are not traced along the field, for patches no traced path can make disks
+
+  // Adds the edges between `region` faces and the other faces of patch `p` as one-edge paths.
+  void cut_between(std::size_t p, const std::vector<char>& in_region, const std::vector<face_descriptor>& faces,
+                   std::size_t& added)
+  {
+    auto findex = CGAL::get_initialized_face_index_map(tm_);
+    std::vector<std::pair<vertex_descriptor, vertex_descriptor>> cut;
+    for(face_descriptor f : faces)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) {
+        const halfedge_descriptor o = opposite(h, tm_);
+        if(is_border(o, tm_) || layout_.is_cut(edge(h, tm_))) continue;
+        if(layout_.patch_id(face(o, tm_)) != p) continue;
+        if(in_region[get(findex, f)] && !in_region[get(findex, face(o, tm_))]) cut.push_back({source(h, tm_), target(h, tm_)});
+      }
+    for(const auto& e : cut) {
+      Path q;
+      q.vertices = {e.first, e.second};
+      Vector d = layout_.point(e.second) - layout_.point(e.first);
+      const double l = std::sqrt(CGAL::to_double(d * d));
+      q.directions = {l > 0. ? d / l : d};
+      auto c = layout_.preview_add_path(q);
+      layout_.add_path(std::move(q), std::move(c));
+      ++added;
+    }
+  }
+  typedef decltype(std::declval<typename Layout::Point_3>() - std::declval<typename Layout::Point_3>()) Vector;
+
+  // Splits a patch that is not a disk: a patch with several boundary loops is cut along the shortest edge
+  // path (Euclidean lengths, inside the patch) from its first loop to another loop, which joins the two; any
+  // other (closed, or with a handle) is cut along the border of the ball of half its faces grown (by face
+  // adjacency) from its first face. Returns the number of one-edge paths added.
+  std::size_t last_resort_split(std::size_t p)
+  {
+    const Patch P = layout_.patch(p);
+    auto findex = CGAL::get_initialized_face_index_map(tm_);
+    std::vector<char> in_region(num_faces(tm_), 0);
+    std::size_t added = 0;
+    if(P.loops.size() > 1) {
+      std::vector<int> loop_of(verts_.size(), -1);
+      for(std::size_t l = 0; l < P.loops.size(); ++l)
+        for(halfedge_descriptor h : P.loops[l]) {
+          int& x = loop_of[layout_.vertex_index(target(h, tm_))];
+          if(x == -1 || x > int(l)) x = int(l);
+        }
+      std::vector<char> in_patch(verts_.size(), 0);
+      for(face_descriptor f : P.faces) for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_)) in_patch[layout_.vertex_index(v)] = 1;
+      std::vector<double> d(verts_.size(), std::numeric_limits<double>::infinity());
+      std::vector<std::size_t> pred(verts_.size(), std::size_t(-1));
+      typedef std::pair<double, std::size_t> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+      for(std::size_t i = 0; i < verts_.size(); ++i) if(loop_of[i] == 0) { d[i] = 0.; q.push({0., i}); }
+      std::size_t reached = std::size_t(-1);
+      while(!q.empty()) {
+        const Item it = q.top();
+        q.pop();
+        if(it.first > d[it.second]) continue;
+        if(loop_of[it.second] > 0) { reached = it.second; break; }
+        if(it.first > 0. && loop_of[it.second] == 0) continue; // back on the first loop: no way through
+        for(halfedge_descriptor h : halfedges_around_target(verts_[it.second], tm_)) {
+          const std::size_t w = layout_.vertex_index(source(h, tm_));
+          if(!in_patch[w] || layout_.is_cut(edge(h, tm_))) continue;
+          // the edge must be inside the patch
+          const halfedge_descriptor o = opposite(h, tm_);
+          const bool inside = (!is_border(h, tm_) && layout_.patch_id(face(h, tm_)) == p) ||
+                              (!is_border(o, tm_) && layout_.patch_id(face(o, tm_)) == p);
+          if(!inside) continue;
+          const double nd = it.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(verts_[it.second]), layout_.point(verts_[w]))));
+          if(nd < d[w]) { d[w] = nd; pred[w] = it.second; q.push({nd, w}); }
+        }
+      }
+      if(reached != std::size_t(-1)) {
+        Path q2;
+        for(std::size_t v = reached; v != std::size_t(-1); v = pred[v]) q2.vertices.push_back(verts_[v]);
+        std::reverse(q2.vertices.begin(), q2.vertices.end());
+        for(std::size_t i = 0; i + 1 < q2.vertices.size(); ++i) {
+          Vector e = layout_.point(q2.vertices[i + 1]) - layout_.point(q2.vertices[i]);
+          const double l = std::sqrt(CGAL::to_double(e * e));
+          q2.directions.push_back(l > 0. ? e / l : e);
+        }
+        if(q2.vertices.size() >= 2) {
+          auto c = layout_.preview_add_path(q2);
+          layout_.add_path(std::move(q2), std::move(c));
+          return 1;
+        }
+      }
+    }
+    // the ball of half the faces around the first face
+    std::vector<face_descriptor> ball{P.faces.front()};
+    in_region[get(findex, P.faces.front())] = 1;
+    for(std::size_t i = 0; i < ball.size() && 2 * ball.size() < P.faces.size(); ++i)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(ball[i], tm_), tm_)) {
+        const halfedge_descriptor o = opposite(h, tm_);
+        if(is_border(o, tm_) || layout_.is_cut(edge(h, tm_))) continue;
+        const face_descriptor g = face(o, tm_);
+        if(in_region[get(findex, g)] || 2 * ball.size() >= P.faces.size()) continue;
+        in_region[get(findex, g)] = 1;
+        ball.push_back(g);
+      }
+    cut_between(p, in_region, P.faces, added);
+    return added;
+  }
+
+  // Dissolves inserted paths on the boundary of invalid patches when that lowers the number of invalid
+  // patches among the patches they separate (a sliver cut off by two close paths goes back into its
+  // neighbour); the merged patch can then be repaired again by the recursion.
+  std::size_t dissolve_around_invalid()
+  {
+    std::size_t removed = 0;
+    std::map<std::pair<vertex_descriptor, vertex_descriptor>, std::size_t> path_of_edge;
+    for(std::size_t id : inserted_) {
+      const Path& q = layout_.path(id);
+      for(std::size_t i = 0; i + 1 < q.vertices.size(); ++i) path_of_edge[std::minmax(q.vertices[i], q.vertices[i + 1])] = id;
+    }
+    std::vector<char> gone(layout_.path_ids().empty() ? 0 : layout_.path_ids().back() + 1, 0);
+    for(std::size_t p = 0; p < layout_.number_of_patches(); ++p) {
+      if(layout_.validity(p) == Layout::SATISFIED) continue;
+      std::vector<std::size_t> ids;
+      for(const auto& loop : layout_.patch(p).loops)
+        for(halfedge_descriptor h : loop) {
+          auto it = path_of_edge.find(std::minmax(source(h, tm_), target(h, tm_)));
+          if(it != path_of_edge.end() && !gone[it->second]) ids.push_back(it->second);
+        }
+      std::sort(ids.begin(), ids.end());
+      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      for(std::size_t id : ids) {
+        Patch_change c = layout_.preview_remove_path(id);
+        std::size_t invalid_before = 0, invalid_after = 0;
+        for(std::size_t q : c.old_patches) invalid_before += layout_.validity(q) != Layout::SATISFIED;
+        for(const Patch& P : c.new_patches) invalid_after += layout_.validity(P) != Layout::SATISFIED;
+        if(invalid_after >= invalid_before) continue;
+        layout_.remove_path(id, std::move(c));
+        gone[id] = 1;
+        inserted_.erase(std::find(inserted_.begin(), inserted_.end(), id));
+        ++removed;
+        break; // patch ids changed
+      }
+    }
+    return removed;
+  }
+
+  // ---- clean-up
+
+  // Removes inserted paths in reverse insertion order when that breaks no condition that holds in the
+  // patches they separate: the merged patches are valid, and meet the quality conditions when one of the
+  // patches they replace did.
   std::size_t clean_up()
   {
     std::size_t removed = 0;
     for(auto it = inserted_.rbegin(); it != inserted_.rend(); ++it) {
-      const auto before = layout_.statistics();
-      const Path p = layout_.path(*it);
-      layout_.remove_path(*it);
-      const auto after = layout_.statistics();
-      if(after.valid_patches == after.patches && after.quality_patches >= before.quality_patches &&
-         before.valid_patches == before.patches)
-        ++removed;
-      else
-        layout_.add_path(p);
+      Patch_change c = layout_.preview_remove_path(*it);
+      std::size_t invalid_before = 0, quality_before = 0, invalid_after = 0, quality_after = 0;
+      for(std::size_t p : c.old_patches) {
+        invalid_before += layout_.validity(p) != Layout::SATISFIED;
+        quality_before += layout_.quality(p) == Layout::SATISFIED;
+      }
+      for(const Patch& P : c.new_patches) {
+        invalid_after += layout_.validity(P) != Layout::SATISFIED;
+        quality_after += layout_.quality(P) == Layout::SATISFIED;
+      }
+      // the merged patches must be valid, and meet the quality conditions if one of the old ones did
+      if(invalid_after > 0 || (quality_before > 0 && quality_after < c.new_patches.size())) continue;
+      layout_.remove_path(*it, std::move(c));
+      ++removed;
     }
     return removed;
   }
 
 private:
   Layout& layout_;
+  const typename std::remove_reference<decltype(std::declval<Layout&>().mesh())>::type& tm_;
+  std::vector<vertex_descriptor> verts_;
   std::vector<std::size_t> inserted_;
+  std::vector<double> dist_;
 };
 
 } // namespace internal
 
 /*!
   \ingroup PkgQuadRemeshingRef
-  Builds the patch layout: the feature edges become the first paths, then rounds of traced paths are
-  inserted (paper section 5.2): convexity enforcement from left turns and U-turns, repeated while it
-  inserts paths; then, for patches still failing a condition, paths from their straight boundary vertices
-  to the first boundary node reached (T-junctions), repeated while it inserts paths (the recursion on
-  invalid patches, bounded by `number_of_iterations`); finally a clean-up removes inserted paths in
-  reverse insertion order when that breaks no condition that holds.
+  Builds the patch layout (paper sections 5.2 and 5.4). The feature edges become the first paths; then
+  rounds of candidate paths are traced in G (`Patch_layout::trace()`) and inserted:
+  - `convexity`: from the left turns and U-turns of invalid patches, first to the opposite nodes of the
+    other bad vertices, then to any boundary node (T-junctions); repeated while it inserts paths;
+  - `loops`: two looped paths (the two field directions) from each of `loop_sample_ratio` times the number
+    of vertices interior vertices, sampled farthest-first from the paths (a blue-noise sample);
+  - `border_to_border`: from straight boundary vertices of patches failing a condition to any boundary node;
+  - `recursion`: the same rounds restricted to each patch still invalid (its bad vertices, interior loops
+    for a patch that is not a disk, its straight vertices), every candidate stopped at the patch boundary,
+    repeated while it helps; when nothing can be inserted, inserted paths on the boundary of invalid
+    patches are dissolved when that lowers the number of invalid patches (slivers between close paths);
+  - `last_resort`: a patch that is still not a disk is cut without following the field: along the
+    shortest edge path joining two of its boundary loops, or, for a closed patch or one with a handle,
+    along the border of the ball of half its faces; repeated (at most 64 times) until every patch is a disk.
 
-  Not done: the looped paths from a blue-noise sample of interior vertices and the farthest-first
-  ordering of candidates; candidates are taken per failing patch in boundary order. There is no
-  last-resort split: a patch no traced path can repair stays invalid and is counted in the figures.
+  In every round the candidates are tried farthest-first (the next one is the one whose vertices are, on
+  average, farthest from the paths already inserted, features included) and kept by one acceptance rule:
+  no tangential crossing, and it either lowers the number of invalid patches among those it touches, raises
+  the number meeting the quality conditions without making a valid one invalid, or splits a patch that
+  still fails a condition (in the border-to-border round: a validity condition). A candidate that leaves
+  an invalid patch behind may not create a U-turn or a patch of fewer than four faces. Candidates are
+  evaluated on the patches they touch only (`Patch_layout::preview_add_path()`), and G is updated around
+  the new path only. A clean-up finally removes inserted paths in reverse insertion order when the patches
+  they separate, merged, are valid, and meet the quality conditions if one of them did.
+
+  Not guaranteed: convexity and the number of sides of every patch. The last resort makes every patch a
+  disk; a disk patch left non-convex or with fewer than 3 or more than 6 corners is counted in the figures
+  (the pipeline then chooses corners for it, see `quad_remesh()`).
 
   \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
   \tparam EdgeIsFeatureMap a readable property map, key `edge_descriptor`, value `bool`
@@ -208,6 +571,11 @@ private:
       \cgalParamDescription{maximal number of repetitions of each round}
       \cgalParamType{`unsigned int`}
       \cgalParamDefault{`8`}
+    \cgalParamNEnd
+    \cgalParamNBegin{loop_sample_ratio}
+      \cgalParamDescription{number of seeds of the looped-paths round, as a fraction of the number of vertices}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.01`, as the original (at most 200 seeds)}
     \cgalParamNEnd
     \cgalParamNBegin{verbose}
       \cgalParamDescription{whether to print the rounds to `std::cerr`, prefixed by `[layout]`}
@@ -230,38 +598,91 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   if(&layout.mesh() != &tmesh) throw std::invalid_argument("trace_patch_layout: the layout is not built on this mesh");
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 8u);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const double loop_ratio = choose_parameter(get_parameter(np, internal_np::loop_sample_ratio), 0.01);
 
   Trace_patch_layout_statistics stats;
   CGAL::Real_timer total;
   total.start();
   internal::Layout_tracer<Layout> tracer(layout);
 
+  typedef Trace_patch_layout_statistics::Round Round;
   auto run = [&](const std::string& name, auto&& body) {
     CGAL::Real_timer t;
     t.start();
-    Trace_patch_layout_statistics::Round r;
+    Round r;
     r.name = name;
     body(r);
     r.seconds = t.time();
     if(verbose)
       std::cerr << "[layout] " << name << ": " << r.candidates << " candidates, " << r.paths << " paths, "
-                << layout.statistics().valid_patches << "/" << layout.patches().size() << " valid patches, "
+                << layout.statistics().valid_patches << "/" << layout.number_of_patches() << " valid patches, "
                 << r.seconds << " s\n";
     stats.rounds.push_back(r);
   };
 
-  run("features", [&](Trace_patch_layout_statistics::Round& r) { r.paths = layout.add_feature_paths(edge_is_feature_map); });
-  run("convexity", [&](Trace_patch_layout_statistics::Round& r) {
-    for(unsigned i = 0; i < iterations; ++i)
-      if(tracer.round_from_boundary({Layout::LEFT_TURN, Layout::U_TURN}, true, 64, r) == 0) break;
+  run("features", [&](Round& r) { r.paths = layout.add_feature_paths(edge_is_feature_map); });
+  // convexity enforcement: from left turns and U-turns, first to the opposite nodes of other bad vertices,
+  // then to any boundary node (T-junctions)
+  run("convexity", [&](Round& r) {
+    for(unsigned i = 0; i < iterations; ++i) {
+      auto starts = tracer.boundary_starts({Layout::LEFT_TURN, Layout::U_TURN}, true, 64);
+      if(starts.empty()) break;
+      auto c1 = tracer.trace_from(starts, {}, true);
+      std::size_t kept = tracer.insert_farthest_first(c1, r);
+      starts = tracer.boundary_starts({Layout::LEFT_TURN, Layout::U_TURN}, true, 64);
+      auto c2 = tracer.trace_from(starts, tracer.boundary_nodes({}), false);
+      kept += tracer.insert_farthest_first(c2, r);
+      if(kept == 0) break;
+    }
   });
-  run("split_invalid", [&](Trace_patch_layout_statistics::Round& r) {
-    for(unsigned i = 0; i < iterations && tracer.invalid_patches() > 0; ++i)
-      if(tracer.round_from_boundary({Layout::STRAIGHT, Layout::LEFT_TURN, Layout::U_TURN}, true, 16, r) == 0) break;
+  run("loops", [&](Round& r) {
+    // at most 200 seeds: every loop is a Dijkstra search over much of G
+    const std::size_t n = (std::min)(std::size_t(200), (std::max)(std::size_t(1), std::size_t(loop_ratio * double(num_vertices(tmesh)))));
+    auto c = tracer.trace_loops(tracer.interior_samples(n, std::size_t(-1)), {});
+    tracer.insert_farthest_first(c, r);
   });
-  run("quality", [&](Trace_patch_layout_statistics::Round& r) {
-    for(unsigned i = 0; i < iterations; ++i)
-      if(tracer.round_from_boundary({Layout::STRAIGHT}, false, 8, r) == 0) break;
+  run("border_to_border", [&](Round& r) {
+    tracer.split_quality_failing = false; // here a split must make a patch valid or improve quality directly
+    for(unsigned i = 0; i < iterations; ++i) {
+      auto starts = tracer.boundary_starts({Layout::STRAIGHT}, false, 16);
+      auto c = tracer.trace_from(starts, tracer.boundary_nodes({}), false);
+      if(tracer.insert_farthest_first(c, r) == 0) break;
+    }
+  });
+  // recursion: rounds restricted to each patch still invalid, the candidates stopped at its boundary;
+  // between two passes, slivers are dissolved into their neighbours
+  run("recursion", [&](Round& r) {
+    for(unsigned depth = 0; depth < 4 * iterations && tracer.invalid_patches() > 0; ++depth) {
+      std::size_t kept = 0;
+      std::vector<std::size_t> invalid;
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+        if(layout.validity(p) != Layout::SATISFIED) invalid.push_back(p);
+      for(std::size_t p : invalid) {
+        if(p >= layout.number_of_patches() || layout.validity(p) == Layout::SATISFIED) continue;
+        const auto ends = tracer.boundary_nodes({p});
+        auto c1 = tracer.trace_from(tracer.boundary_starts({Layout::LEFT_TURN, Layout::U_TURN}, true, 64, p), ends, false);
+        kept += tracer.insert_farthest_first(c1, r);
+        if(layout.validity(p) == Layout::NOT_A_DISK) {
+          auto c2 = tracer.trace_loops(tracer.interior_samples(4, p), ends);
+          kept += tracer.insert_farthest_first(c2, r);
+        }
+        if(layout.validity(p) != Layout::SATISFIED) {
+          auto c3 = tracer.trace_from(tracer.boundary_starts({Layout::STRAIGHT}, true, 32, p), ends, false);
+          kept += tracer.insert_farthest_first(c3, r);
+        }
+      }
+      if(kept == 0 && tracer.dissolve_around_invalid() == 0) break;
+    }
+  });
+  // last resort: patches that are still not disks are cut without following the field (see above)
+  run("last_resort", [&](Round& r) {
+    for(unsigned k = 0; k < 64; ++k) {
+      std::size_t added = 0;
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+        if(layout.validity(p) == Layout::NOT_A_DISK) added += tracer.last_resort_split(p);
+      r.paths += added;
+      if(added == 0) break;
+    }
   });
   stats.removed_paths = tracer.clean_up();
   stats.layout = layout.statistics();
@@ -270,6 +691,13 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
     std::cerr << "[layout] " << stats.layout.valid_patches << "/" << stats.layout.patches << " valid, "
               << stats.layout.quality_patches << " quality, " << stats.layout.paths << " paths, "
               << stats.removed_paths << " removed by clean-up, " << stats.seconds << " s\n";
+  if(verbose) {
+    std::map<int, std::size_t> failing;
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p) ++failing[int(layout.validity(p))];
+    std::cerr << "[layout] validity:";
+    for(auto& f : failing) std::cerr << " " << f.first << ":" << f.second;
+    std::cerr << "\n";
+  }
   return stats;
 }
 

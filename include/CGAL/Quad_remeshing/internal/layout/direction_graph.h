@@ -142,27 +142,19 @@ public:
     length_weight_ = length_weight;
     positions_.resize(nv);
     for(std::size_t i = 0; i < nv; ++i) positions_[i] = points[i] - CGAL::ORIGIN;
-    // direct arcs, kept per source node for the two-hop pass
-    std::vector<std::vector<Hop>> hops(4 * nv);
-    for(std::size_t i = 0; i < nv; ++i)
-      for(int k = 0; k < 4; ++k)
-        if(!(tangent_mask[i] & (1u << (k % 2)))) hops[4 * i + std::size_t(k)] = direct_hops(i, k, false);
-    for(std::size_t u = 0; u < hops.size(); ++u) {
-      std::map<std::size_t, Arc> out; // lightest arc per target, ordered: deterministic insertion
-      for(const Hop& h : hops[u]) {
-        const double w = std::abs(h.drift) + length_weight * h.advance;
-        auto it = out.find(h.to);
-        if(it == out.end() || w < it->second.weight) out[h.to] = Arc{w, -1};
+    for(std::size_t u = 0; u + 1 < boost::num_vertices(g_); ++u) add_node_arcs(u);
+  }
+
+  /// Recomputes the arcs leaving the nodes of the vertices `vs` after the blocked edges or the tangent masks
+  /// changed at some vertices: `vs` must hold the closed two-ring of those vertices (an arc depends on the
+  /// masks at its ends and, for a two-hop arc, at its middle vertex).
+  void rebuild_nodes(const std::vector<std::size_t>& vs)
+  {
+    for(std::size_t i : vs)
+      for(std::size_t k = 0; k < 4; ++k) {
+        boost::clear_out_edges(4 * i + k, g_);
+        add_node_arcs(4 * i + k);
       }
-      for(const Hop& h1 : hops[u])
-        for(const Hop& h2 : hops[h1.to]) {
-          if(h2.to / 4 == u / 4 || h1.drift * h2.drift >= 0.) continue; // only zig-zags gain
-          const double w = std::abs(h1.drift + h2.drift) + length_weight * (h1.advance + h2.advance);
-          auto it = out.find(h2.to);
-          if(it == out.end() || w < it->second.weight) out[h2.to] = Arc{w, std::ptrdiff_t(h1.to)};
-        }
-      for(const auto& a : out) boost::add_edge(u, a.first, a.second, g_);
-    }
   }
 
   std::size_t number_of_nodes() const { return boost::num_vertices(g_) - 1; }
@@ -225,6 +217,35 @@ public:
   }
 
 private:
+  std::vector<Hop> hops_of(std::size_t u) const
+  {
+    const std::size_t i = u / 4;
+    const int k = int(u % 4);
+    if((*mask_)[i] & (1u << (k % 2))) return {};
+    return direct_hops(i, k, false);
+  }
+
+  // the arcs leaving node `u`: one per mesh edge within 45 degrees of the field, and two-hop zig-zags,
+  // keeping the lightest arc per target node
+  void add_node_arcs(std::size_t u)
+  {
+    const std::vector<Hop> first = hops_of(u);
+    std::map<std::size_t, Arc> out; // ordered: deterministic insertion
+    for(const Hop& h : first) {
+      const double w = std::abs(h.drift) + length_weight_ * h.advance;
+      auto it = out.find(h.to);
+      if(it == out.end() || w < it->second.weight) out[h.to] = Arc{w, -1};
+    }
+    for(const Hop& h1 : first)
+      for(const Hop& h2 : hops_of(h1.to)) {
+        if(h2.to / 4 == u / 4 || h1.drift * h2.drift >= 0.) continue; // only zig-zags gain
+        const double w = std::abs(h1.drift + h2.drift) + length_weight_ * (h1.advance + h2.advance);
+        auto it = out.find(h2.to);
+        if(it == out.end() || w < it->second.weight) out[h2.to] = Arc{w, std::ptrdiff_t(h1.to)};
+      }
+    for(const auto& a : out) boost::add_edge(u, a.first, a.second, g_);
+  }
+
   bool leaves_along_path(std::size_t i, int dir) const
   {
     for(std::size_t b : (*blocked_)[i])
