@@ -119,22 +119,33 @@ public:
   //  - it directly helps: fewer of the patches it touches fail a validity condition, or more meet the
   //    quality conditions and none becomes invalid; or
   //  - it splits a patch that still fails a condition, without making a valid patch invalid.
+  // invalid and quality patches among the old and the new patches of a change
+  struct Change_counts
+  {
+    std::size_t invalid_before = 0, quality_before = 0, invalid_after = 0, quality_after = 0;
+  };
+  Change_counts count(const Patch_change& c) const
+  {
+    Change_counts n;
+    for(std::size_t p : c.old_patches) {
+      n.invalid_before += layout_.validity(p) != Layout::SATISFIED;
+      n.quality_before += layout_.quality(p) == Layout::SATISFIED;
+    }
+    for(const Patch& P : c.new_patches) {
+      n.invalid_after += layout_.validity(P) != Layout::SATISFIED;
+      n.quality_after += layout_.quality(P) == Layout::SATISFIED;
+    }
+    return n;
+  }
+
   bool accept(const Path& candidate)
   {
     if(candidate.vertices.size() < 2 || layout_.crosses_paths_tangentially(candidate)) return false;
     Patch_change c = layout_.preview_add_path(candidate);
-    std::size_t invalid_before = 0, quality_before = 0, invalid_after = 0, quality_after = 0;
-    bool some_fails = false;
-    for(std::size_t p : c.old_patches) {
-      invalid_before += layout_.validity(p) != Layout::SATISFIED;
-      const bool q = layout_.quality(p) == Layout::SATISFIED;
-      quality_before += q;
-      some_fails = some_fails || (split_quality_failing ? !q : layout_.validity(p) != Layout::SATISFIED);
-    }
-    for(const Patch& P : c.new_patches) {
-      invalid_after += layout_.validity(P) != Layout::SATISFIED;
-      quality_after += layout_.quality(P) == Layout::SATISFIED;
-    }
+    const Change_counts n = count(c);
+    const std::size_t invalid_before = n.invalid_before, quality_before = n.quality_before;
+    const std::size_t invalid_after = n.invalid_after, quality_after = n.quality_after;
+    const bool some_fails = split_quality_failing ? quality_before < c.old_patches.size() : invalid_before > 0;
     // paths running within an edge of another one cut off slivers: unless every patch it makes is valid,
     // refuse a candidate that makes new U-turns or tiny patches
     if(invalid_after > 0) {
@@ -157,16 +168,22 @@ public:
   static constexpr std::size_t min_patch_faces = 4;
   // whether a split of a valid patch failing a quality condition is accepted for that reason alone
   bool split_quality_failing = true;
+  static std::size_t u_turns(const Patch& P)
+  {
+    std::size_t n = 0;
+    for(const auto& T : P.turns) n += std::size_t(std::count(T.begin(), T.end(), Layout::U_TURN));
+    return n;
+  }
   std::size_t u_turns(const std::vector<Patch>& ps) const
   {
     std::size_t n = 0;
-    for(const Patch& P : ps) for(const auto& T : P.turns) n += std::size_t(std::count(T.begin(), T.end(), Layout::U_TURN));
+    for(const Patch& P : ps) n += u_turns(P);
     return n;
   }
   std::size_t u_turns_of(const std::vector<std::size_t>& ids) const
   {
     std::size_t n = 0;
-    for(std::size_t p : ids) for(const auto& T : layout_.patch(p).turns) n += std::size_t(std::count(T.begin(), T.end(), Layout::U_TURN));
+    for(std::size_t p : ids) n += u_turns(layout_.patch(p));
     return n;
   }
 
@@ -472,10 +489,8 @@ public:
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
       for(std::size_t id : ids) {
         Patch_change c = layout_.preview_remove_path(id);
-        std::size_t invalid_before = 0, invalid_after = 0;
-        for(std::size_t q : c.old_patches) invalid_before += layout_.validity(q) != Layout::SATISFIED;
-        for(const Patch& P : c.new_patches) invalid_after += layout_.validity(P) != Layout::SATISFIED;
-        if(invalid_after >= invalid_before) continue;
+        const Change_counts n = count(c);
+        if(n.invalid_after >= n.invalid_before) continue;
         layout_.remove_path(id, std::move(c));
         gone[id] = 1;
         inserted_.erase(std::find(inserted_.begin(), inserted_.end(), id));
@@ -496,17 +511,9 @@ public:
     std::size_t removed = 0;
     for(auto it = inserted_.rbegin(); it != inserted_.rend(); ++it) {
       Patch_change c = layout_.preview_remove_path(*it);
-      std::size_t invalid_before = 0, quality_before = 0, invalid_after = 0, quality_after = 0;
-      for(std::size_t p : c.old_patches) {
-        invalid_before += layout_.validity(p) != Layout::SATISFIED;
-        quality_before += layout_.quality(p) == Layout::SATISFIED;
-      }
-      for(const Patch& P : c.new_patches) {
-        invalid_after += layout_.validity(P) != Layout::SATISFIED;
-        quality_after += layout_.quality(P) == Layout::SATISFIED;
-      }
+      const Change_counts n = count(c);
       // the merged patches must be valid, and meet the quality conditions if one of the old ones did
-      if(invalid_after > 0 || (quality_before > 0 && quality_after < c.new_patches.size())) continue;
+      if(n.invalid_after > 0 || (n.quality_before > 0 && n.quality_after < c.new_patches.size())) continue;
       layout_.remove_path(*it, std::move(c));
       ++removed;
     }
