@@ -2,6 +2,7 @@
 #include "test_support.h"
 
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
 
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -10,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace {
@@ -189,6 +191,105 @@ BOOST_AUTO_TEST_CASE(mismatched_counts_are_refused)
   BOOST_CHECK_THROW(QR::assemble_quad_mesh(box.mesh, box.layout, counts, patterns, q, qf), std::invalid_argument);
   counts.pop_back();
   BOOST_CHECK_THROW(QR::assemble_quad_mesh(box.mesh, box.layout, counts, patterns, q, qf), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(patch_with_a_slit_is_cut_open)
+{
+  // A flat 4 x 2 rectangle of 8 x 4 cells; one patch whose bottom side walks up a slit from (2,0) to
+  // (2,1) and back down. Without cutting the patch open along the slit, both sides of the slit
+  // would share their map positions and the quads there would fold.
+  const int nx = 8, ny = 4;
+  Mesh t;
+  std::vector<V> g;
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i <= nx; ++i) g.push_back(t.add_vertex(Point_3(0.5 * i, 0.5 * j, 0.)));
+  auto id = [&](int i, int j) { return g[std::size_t(j * (nx + 1) + i)]; };
+  QR::Patch_layout_description<Mesh> layout;
+  QR::Patch_layout_description<Mesh>::Patch patch;
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+    {
+      patch.faces.push_back(t.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1)));
+      patch.faces.push_back(t.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1)));
+    }
+  auto add_arc = [&](std::vector<V> chain) {
+    QR::Patch_layout_description<Mesh>::Arc arc;
+    arc.vertices = chain;
+    arc.on_feature = true;
+    layout.arcs.push_back(arc);
+    return layout.arcs.size() - 1;
+  };
+  std::vector<V> bottom_left, slit, bottom_right, right, top, left;
+  for(int i = 0; i <= 4; ++i) bottom_left.push_back(id(i, 0));
+  for(int j = 0; j <= 2; ++j) slit.push_back(id(4, j));
+  for(int i = 4; i <= nx; ++i) bottom_right.push_back(id(i, 0));
+  for(int j = 0; j <= ny; ++j) right.push_back(id(nx, j));
+  for(int i = nx; i >= 0; --i) top.push_back(id(i, ny));
+  for(int j = ny; j >= 0; --j) left.push_back(id(0, j));
+  const std::size_t a_bl = add_arc(bottom_left), a_slit = add_arc(slit), a_br = add_arc(bottom_right),
+                    a_r = add_arc(right), a_t = add_arc(top), a_l = add_arc(left);
+  typedef QR::Patch_layout_description<Mesh>::Side_arc SA;
+  patch.sides = {{SA{a_bl, false}, SA{a_slit, false}, SA{a_slit, true}, SA{a_br, false}},
+                 {SA{a_r, false}}, {SA{a_t, false}}, {SA{a_l, false}}};
+  layout.patches.push_back(patch);
+  // bottom side 4 + 2 + 2 + 4 = 12 edges, as the top
+  std::vector<int> counts(layout.arcs.size(), 0);
+  counts[a_bl] = 4; counts[a_slit] = 2; counts[a_br] = 4; counts[a_r] = 4; counts[a_t] = 12; counts[a_l] = 4;
+  const std::vector<Grid_pattern> patterns(1, Grid_pattern(12, 4));
+
+  // cut open along the slit, the slit's base and middle vertices have two copies, its tip one
+  std::set<std::pair<std::size_t, std::size_t>> cut_edges;
+  for(const auto& side : patch.sides)
+    for(const SA& sa : side)
+      for(std::size_t k = 0; k + 1 < layout.arcs[sa.arc].vertices.size(); ++k)
+        cut_edges.insert(QR::internal::Cut_open_patch<Mesh>::key(layout.arcs[sa.arc].vertices[k],
+                                                                 layout.arcs[sa.arc].vertices[k + 1]));
+  const QR::internal::Cut_open_patch<Mesh> cut(t, patch.faces, cut_edges);
+  BOOST_TEST(cut.vertex_of.size() == num_vertices(t) + 2u);
+  std::size_t left_u, left_w, right_u, right_w;
+  BOOST_TEST_REQUIRE(cut.left_of(id(4, 0), id(4, 1), left_u, left_w));
+  BOOST_TEST_REQUIRE(cut.left_of(id(4, 1), id(4, 0), right_w, right_u));
+  BOOST_TEST(left_u != right_u);
+  BOOST_TEST(left_w != right_w);
+
+  Mesh q;
+  auto qf = get(CGAL::dynamic_edge_property_t<bool>(), q);
+  const QR::Quad_assembly_statistics s = QR::assemble_quad_mesh(t, layout, counts, patterns, q, qf);
+  BOOST_TEST(q.is_valid());
+  // The grid's column over the slit tip has no inner edge at the tip: its two quads merge into one.
+  BOOST_TEST(s.merged_quads == 1u);
+  BOOST_TEST(s.folded_quads == 0u);
+  BOOST_TEST(num_faces(q) == 12u * 4u - 1u);
+  // still a disk with one boundary cycle
+  BOOST_TEST(int(num_vertices(q)) - int(num_edges(q)) + int(num_faces(q)) == 1);
+  // every quad lies flat in the rectangle and keeps its orientation
+  for(auto f : faces(q))
+  {
+    std::array<Point_3, 4> p;
+    int i = 0;
+    for(auto v : vertices_around_face(halfedge(f, q), q)) p[std::size_t(i++)] = q.point(v);
+    BOOST_TEST(QR::internal::quality::quad_scaled_jacobian(p) > 0.);
+    const auto n = CGAL::cross_product(p[2] - p[0], p[3] - p[1]);
+    BOOST_TEST(n.z() > 0.);
+  }
+  // no quad edge crosses the slit (which would mean that the two sides of the slit got mixed up)
+  std::size_t crossing = 0;
+  for(auto e : edges(q))
+  {
+    const Point_3 a = q.point(source(e, q)), b = q.point(target(e, q));
+    if((a.x() - 2.) * (b.x() - 2.) >= 0.) continue;
+    const double y = a.y() + (b.y() - a.y()) * (2. - a.x()) / (b.x() - a.x());
+    if(y > 0. && y < 1. - 1e-9) ++crossing;
+  }
+  BOOST_TEST(crossing == 0u);
+  // the slit is inside the mesh: its base and middle vertices have quads on both sides
+  std::size_t inner_on_slit = 0;
+  for(auto v : vertices(q))
+  {
+    const Point_3 p = q.point(v);
+    if(std::abs(p.x() - 2.) < 1e-12 && p.y() > 0.25 && p.y() < 0.75) inner_on_slit += is_border(v, q) ? 0 : 1;
+  }
+  BOOST_TEST(inner_on_slit == 1u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -71,6 +71,37 @@ void split_into_quads(const Mesh& t, FeatureMap tf, Mesh& q, QFeatureMap& qfeatu
     }
 }
 
+// The unit square as two triangles (its border as the features) and an n x n quad grid on it; `jitter`
+// may move a grid point before it is added.
+struct Grid_on_square
+{
+  Mesh t, q;
+  decltype(get(CGAL::dynamic_edge_property_t<bool>(), t)) tf;
+  std::vector<Mesh::Vertex_index> grid;
+
+  template <typename Jitter>
+  Grid_on_square(int n, Jitter jitter)
+  {
+    auto a = t.add_vertex(Point_3(0, 0, 0)), b = t.add_vertex(Point_3(1, 0, 0)), c = t.add_vertex(Point_3(1, 1, 0)),
+         d = t.add_vertex(Point_3(0, 1, 0));
+    t.add_face(a, b, c);
+    t.add_face(a, c, d);
+    tf = get(CGAL::dynamic_edge_property_t<bool>(), t);
+    for(auto e : edges(t)) put(tf, e, is_border(e, t));
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i)
+      {
+        double x = double(i) / n, y = double(j) / n;
+        jitter(i, j, x, y);
+        grid.push_back(q.add_vertex(Point_3(x, y, 0)));
+      }
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+        q.add_face(grid[j * (n + 1) + i], grid[j * (n + 1) + i + 1], grid[(j + 1) * (n + 1) + i + 1],
+                   grid[(j + 1) * (n + 1) + i]);
+  }
+};
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(smoothing)
@@ -146,31 +177,14 @@ BOOST_AUTO_TEST_CASE(fandisk_split_quads_improve_and_stay_on_features)
 
 BOOST_AUTO_TEST_CASE(perturbed_grid_on_a_plane_is_untangled_towards_squares)
 {
-  // A flat 2 x 2 square as two triangles, and a 10 x 10 quad grid on it with interior noise.
-  Mesh t;
-  auto a = t.add_vertex(Point_3(0, 0, 0)), b = t.add_vertex(Point_3(1, 0, 0)), c = t.add_vertex(Point_3(1, 1, 0)),
-       d = t.add_vertex(Point_3(0, 1, 0));
-  t.add_face(a, b, c);
-  t.add_face(a, c, d);
-  auto tf = get(CGAL::dynamic_edge_property_t<bool>(), t);
-  for(auto e : edges(t)) put(tf, e, is_border(e, t));
-
+  // A 10 x 10 quad grid on the flat unit square with interior noise.
   const int n = 10;
-  Mesh q;
-  std::vector<Mesh::Vertex_index> grid;
   CGAL::Random rng(7);
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i)
-    {
-      double x = double(i) / n, y = double(j) / n;
-      if(i > 0 && i < n && j > 0 && j < n) { x += rng.get_double(-0.03, 0.03); y += rng.get_double(-0.03, 0.03); }
-      grid.push_back(q.add_vertex(Point_3(x, y, 0)));
-    }
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i)
-      q.add_face(grid[j * (n + 1) + i], grid[j * (n + 1) + i + 1], grid[(j + 1) * (n + 1) + i + 1],
-                 grid[(j + 1) * (n + 1) + i]);
-  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(q, t, tf);
+  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
+    if(i > 0 && i < n && j > 0 && j < n) { x += rng.get_double(-0.03, 0.03); y += rng.get_double(-0.03, 0.03); }
+  });
+  Mesh& q = g.q;
+  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(q, g.t, g.tf);
   BOOST_TEST(s.fixed_vertices == 4u); // the four corners of the square
   BOOST_TEST(s.min_scaled_jacobian_after > s.min_scaled_jacobian_before);
   BOOST_TEST(s.mean_scaled_jacobian_after > 0.99);
@@ -180,6 +194,27 @@ BOOST_AUTO_TEST_CASE(perturbed_grid_on_a_plane_is_untangled_towards_squares)
     BOOST_TEST(q.point(v).x() >= -1e-12);
     BOOST_TEST(q.point(v).x() <= 1 + 1e-12);
   }
+}
+
+BOOST_AUTO_TEST_CASE(folded_grid_is_untangled_without_smoothing_iterations)
+{
+  // An 8 x 8 quad grid on the flat unit square in which two inner vertices were pushed across their
+  // neighbours, which folds several quads over.
+  const int n = 8;
+  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
+    if(i == 2 && j == 2) { x = 3.6 / n; y = 3.5 / n; }
+    if(i == 6 && j == 5) { x = 4.4 / n; y = 5.3 / n; }
+  });
+  Mesh& q = g.q;
+  BOOST_TEST_REQUIRE(min_sj(q) <= 0.);
+
+  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(q, g.t, g.tf, CGAL::parameters::number_of_iterations(0));
+  BOOST_TEST(s.iterations == 0u);
+  BOOST_TEST(s.inverted_before >= 4u);
+  BOOST_TEST(s.inverted_after == 0u);
+  BOOST_TEST(s.untangling_moves > 0u);
+  BOOST_TEST(min_sj(q) > 0.);
+  for(auto v : vertices(q)) BOOST_TEST(std::abs(q.point(v).z()) < 1e-12);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,6 +8,7 @@
 
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/internal/assembly/cut_open_patch.h>
 #include <CGAL/Quad_remeshing/internal/assembly/parameterize_patch.h>
 
 #include <CGAL/Real_timer.h>
@@ -22,9 +23,9 @@
 #include <cstddef>
 #include <iostream>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -77,6 +78,8 @@ struct Quad_assembly_statistics
   std::size_t vertices = 0;        ///< vertices of the quad mesh
   std::size_t faces = 0;           ///< faces of the quad mesh
   std::size_t feature_edges = 0;   ///< quad edges on feature arcs
+  std::size_t folded_quads = 0;    ///< quads of the patterns left out because they fold onto themselves at the tip of a slit
+  std::size_t merged_quads = 0;    ///< pairs of quads merged into one around an inner vertex with two edges
   double seconds = 0.;             ///< time spent
 
   /// the figures as a report record
@@ -87,6 +90,8 @@ struct Quad_assembly_statistics
     r["V"] = vertices;
     r["F"] = faces;
     r["feature_edges"] = feature_edges;
+    r["folded_quads"] = folded_quads;
+    r["merged_quads"] = merged_quads;
     r["seconds"] = seconds;
     return r;
   }
@@ -103,7 +108,15 @@ struct Quad_assembly_statistics
   Interior vertices of a patch are placed through a map of the patch's triangles onto the patch's
   polygon (the convex polygon of its quadrangulation, the boundary fixed by arclength along each arc)
   with positive mean-value weights, which makes the map one-to-one; each pattern vertex is located in
-  that map and lifted to the surface by barycentric interpolation.
+  that map and lifted to the surface by barycentric interpolation. A patch whose sides walk an arc
+  twice (a slit, a bridge to an inner loop, the seam of a band) is cut open along its sides first: the
+  triangles on the two sides of such an arc get separate copies of its vertices, so that the patch is
+  a disk with a simple boundary and the map does not fold.
+
+  Two repairs keep the result a manifold quad mesh where a pattern meets a slit: a pattern quad that
+  folds onto itself over the tip of a slit (its opposite corners are one vertex) is left out, and the
+  two quads around an inner vertex with only two edges (two flat corners) are merged into one. Both
+  are counted in the statistics.
 
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
   @tparam PatchQuadrangulation a class with the members `positions` (a random-access range of
@@ -137,7 +150,6 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
 {
   typedef boost::graph_traits<TriangleMesh> TGT;
   typedef typename TGT::vertex_descriptor t_vertex;
-  typedef typename TGT::halfedge_descriptor t_halfedge;
   typedef typename boost::graph_traits<QuadMesh>::vertex_descriptor q_vertex;
   typedef typename boost::property_traits<typename boost::property_map<QuadMesh, CGAL::vertex_point_t>::type>::value_type
     Q_point;
@@ -157,11 +169,15 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     const auto p = get(tvpm, v);
     return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
   };
-  auto add_point = [&](const std::array<double, 3>& p) { return add_vertex(Q_point(p[0], p[1], p[2]), qmesh); };
+  // the quad mesh is built from an indexed soup first: only the points some quad uses become vertices
+  typedef std::size_t q_index;
+  const q_index no_index = q_index(-1);
+  std::vector<std::array<double, 3>> points;
+  auto add_point = [&](const std::array<double, 3>& p) { points.push_back(p); return q_index(points.size() - 1); };
 
   // Shared vertices: arc end points (keyed by mesh vertex) and the inner subdivision points of every arc.
-  std::map<t_vertex, q_vertex> end_vertex;
-  std::vector<std::vector<q_vertex>> arc_points(layout.arcs.size());
+  std::map<t_vertex, q_index> end_vertex;
+  std::vector<std::vector<q_index>> arc_points(layout.arcs.size());
   std::vector<std::vector<double>> arc_fraction(layout.arcs.size()); // arclength fraction of each chain vertex
   for(std::size_t a = 0; a < layout.arcs.size(); ++a)
   {
@@ -197,7 +213,8 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     }
   }
 
-  std::vector<std::array<q_vertex, 4>> quads;
+  std::vector<std::array<q_index, 4>> quads;
+  std::vector<std::size_t> quad_patch; // the patch of every quad, for error messages
   for(std::size_t pi = 0; pi < layout.patches.size(); ++pi)
   {
     const auto& patch = layout.patches[pi];
@@ -213,7 +230,7 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
                                   + ": its quadrangulation does not have the sides' edge counts");
 
     // pattern vertex -> quad-mesh vertex, first on the boundary (shared), with the uv of each corner
-    std::vector<q_vertex> vmap(pattern.positions.size(), boost::graph_traits<QuadMesh>::null_vertex());
+    std::vector<q_index> vmap(pattern.positions.size(), no_index);
     std::vector<std::size_t> corner_index(n + 1, 0);
     {
       std::size_t k = 0;
@@ -230,35 +247,24 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
       corner_index[n] = k;
     }
 
-    // the patch's triangles as a local indexed mesh
-    internal::Patch_map map;
-    std::unordered_map<std::size_t, std::size_t> local;
-    std::vector<t_vertex> local_to_mesh;
-    auto local_id = [&](t_vertex v) {
-      const std::size_t key = std::size_t(v);
-      auto it = local.find(key);
-      if(it != local.end()) return it->second;
-      const std::size_t id = map.points.size();
-      local.emplace(key, id);
-      map.points.push_back(point_of(v));
-      local_to_mesh.push_back(v);
-      return id;
-    };
-    for(auto f : patch.faces)
-    {
-      std::array<std::size_t, 3> t;
-      int c = 0;
-      for(t_halfedge h : halfedges_around_face(halfedge(f, tmesh), tmesh))
+    // the patch's triangles as a local indexed mesh, cut open along the patch's sides
+    std::set<std::pair<std::size_t, std::size_t>> cut_edges;
+    for(const auto& side : patch.sides)
+      for(const Side_arc& sa : side)
       {
-        if(c == 3) throw std::invalid_argument("assemble_quad_mesh: the mesh must be triangulated");
-        t[c++] = local_id(target(h, tmesh));
+        const auto& chain = layout.arcs[sa.arc].vertices;
+        for(std::size_t q = 0; q + 1 < chain.size(); ++q)
+          cut_edges.insert(internal::Cut_open_patch<TriangleMesh>::key(chain[q], chain[q + 1]));
       }
-      map.triangles.push_back(t);
-    }
+    const internal::Cut_open_patch<TriangleMesh> cut(tmesh, patch.faces, cut_edges);
+    internal::Patch_map map;
+    map.triangles = cut.triangles;
+    for(t_vertex v : cut.vertex_of) map.points.push_back(point_of(v));
     map.uv.assign(map.points.size(), {{0., 0.}});
     map.fixed.assign(map.points.size(), false);
 
-    // boundary of the map: every chain vertex of every arc, at its place along its side of the polygon
+    // boundary of the map: every chain vertex of every arc, at its place along its side of the
+    // polygon; the copy of a chain vertex is the one of the patch triangle on the left of the walk
     auto corner_uv = [&](std::size_t i) { return pattern.positions[pattern.boundary[corner_index[i % n] % perimeter]]; };
     std::size_t fixed_count = 0;
     for(std::size_t i = 0; i < n; ++i)
@@ -269,17 +275,23 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
       {
         const auto& chain = layout.arcs[sa.arc].vertices;
         const double s = double(arc_edge_counts[sa.arc]);
-        for(std::size_t q = 0; q < chain.size(); ++q)
+        const std::size_t m = chain.size();
+        for(std::size_t q = 0; q < m; ++q)
         {
-          const std::size_t idx = sa.reversed ? chain.size() - 1 - q : q;
+          // walking position q is chain index idx; the walk step used is (q, q+1), or (q-1, q) at the end
+          auto at = [&](std::size_t w) { return sa.reversed ? m - 1 - w : w; };
+          const std::size_t idx = at(q);
+          const std::size_t a = q + 1 < m ? q : q - 1;
+          std::size_t local_a, local_b;
+          if(!cut.left_of(chain[at(a)], chain[at(a + 1)], local_a, local_b))
+            throw std::runtime_error("assemble_quad_mesh: patch " + std::to_string(pi)
+                                     + ": a side does not have the patch on its left");
+          const std::size_t lv = q + 1 < m ? local_a : local_b;
           const double along = sa.reversed ? 1. - arc_fraction[sa.arc][idx] : arc_fraction[sa.arc][idx];
           const double t = (offset + along * s) / double(side_count[i]);
-          auto it = local.find(std::size_t(chain[idx]));
-          if(it == local.end())
-            throw std::runtime_error("assemble_quad_mesh: patch " + std::to_string(pi) + ": an arc vertex is not in the patch");
-          if(!map.fixed[it->second]) ++fixed_count;
-          map.fixed[it->second] = true;
-          map.uv[it->second] = {{c0[0] + t * (c1[0] - c0[0]), c0[1] + t * (c1[1] - c0[1])}};
+          if(!map.fixed[lv]) ++fixed_count;
+          map.fixed[lv] = true;
+          map.uv[lv] = {{c0[0] + t * (c1[0] - c0[0]), c0[1] + t * (c1[1] - c0[1])}};
         }
         offset += s;
       }
@@ -289,25 +301,112 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     internal::build_location_grid(map);
 
     for(std::size_t v = 0; v < pattern.positions.size(); ++v)
-      if(vmap[v] == boost::graph_traits<QuadMesh>::null_vertex())
+      if(vmap[v] == no_index)
         vmap[v] = add_point(internal::lift(map, {{pattern.positions[v][0], pattern.positions[v][1]}}));
     for(const auto& q : pattern.quads)
-      quads.push_back({{vmap[q[0]], vmap[q[1]], vmap[q[2]], vmap[q[3]]}});
+    {
+      const std::array<q_index, 4> quad{{vmap[q[0]], vmap[q[1]], vmap[q[2]], vmap[q[3]]}};
+      // At the tip of a slit (an arc walked there and back) the quad over the tip folds onto itself,
+      // (a, tip, a, b): without it, its two neighbours share the edge (a, b) directly and the tip goes.
+      if(quad[0] == quad[2] || quad[1] == quad[3])
+      {
+        ++stats.folded_quads;
+        continue;
+      }
+      quads.push_back(quad);
+      quad_patch.push_back(pi);
+    }
     ++stats.patches;
   }
 
-  for(const auto& q : quads)
+  // A vertex inside the mesh with only two quads, which share both its edges (the tip of a slit
+  // whose pattern has no inner edge there), has two flat corners: the two quads become one.
   {
-    std::vector<q_vertex> face(q.begin(), q.end());
+    std::vector<std::vector<std::size_t>> quads_at(points.size());
+    std::vector<bool> gone(quads.size(), false);
+    for(std::size_t k = 0; k < quads.size(); ++k)
+      for(q_index i : quads[k]) quads_at[i].push_back(k);
+    auto corner = [&](std::size_t k, q_index v) {
+      for(int i = 0; i < 4; ++i)
+        if(quads[k][std::size_t(i)] == v) return i;
+      return -1;
+    };
+    std::vector<q_index> work;
+    for(q_index v = 0; v < points.size(); ++v)
+      if(quads_at[v].size() == 2) work.push_back(v);
+    while(!work.empty())
+    {
+      const q_index t = work.back();
+      work.pop_back();
+      std::vector<std::size_t> around;
+      for(std::size_t k : quads_at[t])
+        if(!gone[k]) around.push_back(k);
+      if(around.size() != 2) continue;
+      const std::size_t k1 = around[0], k2 = around[1];
+      const int c1 = corner(k1, t), c2 = corner(k2, t);
+      // k1 = (t, b, x, a) and k2 = (t, a, y, b)
+      const q_index b = quads[k1][std::size_t((c1 + 1) % 4)], x = quads[k1][std::size_t((c1 + 2) % 4)],
+                    a = quads[k1][std::size_t((c1 + 3) % 4)];
+      const q_index y = quads[k2][std::size_t((c2 + 2) % 4)];
+      if(quads[k2][std::size_t((c2 + 1) % 4)] != a || quads[k2][std::size_t((c2 + 3) % 4)] != b || x == y) continue;
+      quads[k1] = {{b, x, a, y}};
+      gone[k2] = true;
+      quads_at[y].push_back(k1);
+      ++stats.merged_quads;
+      for(q_index w : {a, b, x, y}) work.push_back(w);
+    }
+    std::vector<std::array<q_index, 4>> kept;
+    std::vector<std::size_t> kept_patch;
+    for(std::size_t k = 0; k < quads.size(); ++k)
+      if(!gone[k])
+      {
+        kept.push_back(quads[k]);
+        kept_patch.push_back(quad_patch[k]);
+      }
+    quads.swap(kept);
+    quad_patch.swap(kept_patch);
+  }
+
+  // Says why a quad cannot be added, naming the patches involved.
+  std::map<std::pair<q_index, q_index>, std::size_t> directed_edge_quad;
+  for(std::size_t k = 0; k < quads.size(); ++k)
+    for(int i = 0; i < 4; ++i) directed_edge_quad.emplace(std::make_pair(quads[k][i], quads[k][(i + 1) % 4]), k);
+  auto why_not_manifold = [&](std::size_t k) {
+    const auto& q = quads[k];
+    std::string what = "quad " + std::to_string(k) + " of patch " + std::to_string(quad_patch[k]);
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+        if(q[i] == q[j]) return what + " has a repeated vertex";
+    for(int i = 0; i < 4; ++i)
+    {
+      const auto it = directed_edge_quad.find(std::make_pair(q[i], q[(i + 1) % 4]));
+      if(it != directed_edge_quad.end() && it->second != k)
+        return what + " and quad " + std::to_string(it->second) + " of patch " + std::to_string(quad_patch[it->second])
+               + " use the same edge in the same direction";
+    }
+    return what + " would make a vertex non-manifold";
+  };
+  std::vector<q_vertex> vertex_of(points.size(), boost::graph_traits<QuadMesh>::null_vertex());
+  for(const auto& q : quads)
+    for(q_index i : q)
+      if(vertex_of[i] == boost::graph_traits<QuadMesh>::null_vertex())
+        vertex_of[i] = add_vertex(Q_point(points[i][0], points[i][1], points[i][2]), qmesh);
+  for(std::size_t k = 0; k < quads.size(); ++k)
+  {
+    std::vector<q_vertex> face;
+    for(q_index i : quads[k]) face.push_back(vertex_of[i]);
     if(CGAL::Euler::add_face(face, qmesh) == boost::graph_traits<QuadMesh>::null_face())
-      throw std::runtime_error("assemble_quad_mesh: the patch quadrangulations do not form a manifold mesh");
+      throw std::runtime_error("assemble_quad_mesh: the patch quadrangulations do not form a manifold mesh ("
+                               + why_not_manifold(k) + ")");
   }
   for(auto e : edges(qmesh)) put(qmesh_edge_is_feature, e, false);
   for(std::size_t a = 0; a < layout.arcs.size(); ++a)
     if(layout.arcs[a].on_feature)
       for(std::size_t k = 0; k + 1 < arc_points[a].size(); ++k)
       {
-        const auto h = halfedge(arc_points[a][k], arc_points[a][k + 1], qmesh);
+        const q_vertex u = vertex_of[arc_points[a][k]], w = vertex_of[arc_points[a][k + 1]];
+        if(u == boost::graph_traits<QuadMesh>::null_vertex() || w == boost::graph_traits<QuadMesh>::null_vertex()) continue;
+        const auto h = halfedge(u, w, qmesh);
         if(h.second)
         {
           put(qmesh_edge_is_feature, edge(h.first, qmesh), true);
@@ -319,7 +418,8 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
   stats.seconds = timer.time();
   if(verbose)
     std::cerr << "[assemble] " << stats.patches << " patches -> " << stats.vertices << " vertices, " << stats.faces
-              << " quads, " << stats.feature_edges << " feature edges (" << stats.seconds << " s)\n";
+              << " quads, " << stats.feature_edges << " feature edges, " << stats.folded_quads << " folded quads left out, "
+              << stats.merged_quads << " pairs merged (" << stats.seconds << " s)\n";
   return stats;
 }
 

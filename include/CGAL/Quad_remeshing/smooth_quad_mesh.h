@@ -44,6 +44,9 @@ struct Quad_smoothing_statistics
   std::size_t feature_vertices = 0;   ///< vertices that slide along a feature line
   std::size_t fixed_vertices = 0;     ///< vertices that never move (feature corners, constrained vertices)
   std::size_t rejected_moves = 0;     ///< moves refused (even after backing off) because they would worsen a quad too much
+  std::size_t inverted_before = 0;    ///< quads with a scaled Jacobian <= 0 before smoothing
+  std::size_t inverted_after = 0;     ///< quads with a scaled Jacobian <= 0 after smoothing
+  std::size_t untangling_moves = 0;   ///< vertex moves made to untangle quads with a scaled Jacobian <= 0
   double min_scaled_jacobian_before = 0.;  ///< over all quads, before smoothing
   double min_scaled_jacobian_after = 0.;   ///< over all quads, after smoothing
   double mean_scaled_jacobian_before = 0.; ///< over all quads, before smoothing
@@ -59,6 +62,9 @@ struct Quad_smoothing_statistics
     r["feature_vertices"] = feature_vertices;
     r["fixed_vertices"] = fixed_vertices;
     r["rejected_moves"] = rejected_moves;
+    r["inverted_before"] = inverted_before;
+    r["inverted_after"] = inverted_after;
+    r["untangling_moves"] = untangling_moves;
     r["min_scaled_jacobian_before"] = min_scaled_jacobian_before;
     r["min_scaled_jacobian_after"] = min_scaled_jacobian_after;
     r["mean_scaled_jacobian_before"] = mean_scaled_jacobian_before;
@@ -199,9 +205,18 @@ struct Feature_lines
   corners ("tangent-space smoothing" by template fitting). Free vertices are then projected back onto
   the triangle mesh (closest point, AABB tree); vertices on a feature line slide along it: they are
   projected onto the feature line of the triangle mesh they started on; feature corners and
-  constrained vertices do not move. A move that would make an incident quad's scaled Jacobian
-  lower the smallest scaled Jacobian of the incident quads below both its previous value and 0.3, is
-  halved twice and then refused, so smoothing never inverts a quad (nor worsens an already bad one).
+  constrained vertices do not move. A move that would add an incident quad with a scaled Jacobian
+  <= 0, or lower the smallest scaled Jacobian of the incident quads below both its previous value and
+  0.3, is halved twice and then refused, so smoothing never inverts a quad (nor worsens an already bad
+  one).
+
+  Before and after the smoothing iterations, quads with a scaled Jacobian <= 0 are untangled: each
+  vertex of such a quad and each of its neighbours (unless fixed) tries a few positions (the
+  average of its fitted-square corners, the average parallelogram completion of its quads, the
+  centroid of its neighbours, halfway to each, and small steps along the coordinate axes), each
+  projected like a smoothing move, and takes the one with the fewest incident quads with a scaled
+  Jacobian <= 0, then the largest smallest scaled Jacobian, if that is strictly better than where it
+  is. The number of such quads never grows.
 
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
@@ -338,15 +353,10 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     std::array<Point_3, 4> pts;
     return quad_points(f, pts) ? internal::quality::quad_scaled_jacobian(pts) : 1.;
   };
-  auto min_sj_around = [&](q_vertex v) {
-    double m = 1.;
-    for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
-      if(f != QGT::null_face()) m = (std::min)(m, quad_sj(f));
-    return m;
-  };
-  auto sj_figures = [&](double& mn, double& mean) {
+  auto sj_figures = [&](double& mn, double& mean, std::size_t& inverted) {
     mn = 1.;
     mean = 0.;
+    inverted = 0;
     std::size_t n = 0;
     for(q_face f : faces(qmesh))
     {
@@ -355,11 +365,113 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       const double s = internal::quality::quad_scaled_jacobian(pts);
       mn = (std::min)(mn, s);
       mean += s;
+      if(s <= 0.) ++inverted;
       ++n;
     }
     if(n) mean /= double(n);
   };
-  sj_figures(stats.min_scaled_jacobian_before, stats.mean_scaled_jacobian_before);
+  sj_figures(stats.min_scaled_jacobian_before, stats.mean_scaled_jacobian_before, stats.inverted_before);
+
+  // Untangling: the vertices of quads with a scaled Jacobian <= 0, and their neighbours, try a few
+  // positions (the fitted-square target, the neighbours' centroid, the parallelogram completions of
+  // their quads, small steps along the axes), each put back on the surface or on the vertex's feature
+  // line, and take the one that leaves fewest such quads around them, then the best smallest scaled
+  // Jacobian. Only strict improvements are taken, so the number of such quads never grows.
+  auto local_score = [&](q_vertex v) {
+    std::pair<int, double> score(0, 1.);
+    for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
+      if(f != QGT::null_face())
+      {
+        const double s = quad_sj(f);
+        if(s <= 0.) --score.first; // negated, so that a larger pair is better
+        score.second = (std::min)(score.second, s);
+      }
+    return score;
+  };
+  auto place = [&](q_vertex v, const Point_3& p) {
+    return get(kind, v) == 1 ? lines.project(get(line_of, v), p) : tree.closest_point(p);
+  };
+  auto untangle = [&](unsigned max_passes) {
+    for(unsigned pass = 0; pass < max_passes; ++pass)
+    {
+      std::vector<q_vertex> candidates;
+      for(q_face f : faces(qmesh))
+        if(quad_sj(f) <= 0.)
+          for(q_vertex v : vertices_around_face(halfedge(f, qmesh), qmesh))
+          {
+            candidates.push_back(v);
+            for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh)) candidates.push_back(w);
+          }
+      if(candidates.empty()) return;
+      std::sort(candidates.begin(), candidates.end());
+      candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+      std::size_t moves = 0;
+      for(q_vertex v : candidates)
+      {
+        if(get(kind, v) == 2) continue;
+        const Point_3 old_p = get(qvpm, v);
+        std::vector<Point_3> tries;
+        Vector_3 square_sum = CGAL::NULL_VECTOR, completion_sum = CGAL::NULL_VECTOR;
+        int quads_around = 0;
+        for(q_halfedge h : halfedges_around_target(halfedge(v, qmesh), qmesh))
+        {
+          if(is_border(h, qmesh)) continue;
+          std::array<Point_3, 4> pts;
+          if(!quad_points(face(h, qmesh), pts)) continue;
+          // the corner of v in this quad: the face's halfedges start after h
+          const std::array<Point_3, 4> sq = internal::best_fit_square<Vector_3>(pts);
+          int i = 0, iv = -1;
+          for(q_halfedge g : halfedges_around_face(halfedge(face(h, qmesh), qmesh), qmesh))
+          {
+            if(g == h) iv = i;
+            ++i;
+          }
+          if(iv < 0) continue;
+          square_sum = square_sum + (sq[iv] - CGAL::ORIGIN);
+          completion_sum = completion_sum + ((pts[(iv + 1) % 4] - CGAL::ORIGIN) + (pts[(iv + 3) % 4] - pts[(iv + 2) % 4]));
+          ++quads_around;
+        }
+        if(quads_around == 0) continue;
+        tries.push_back(CGAL::ORIGIN + square_sum / double(quads_around));
+        tries.push_back(CGAL::ORIGIN + completion_sum / double(quads_around));
+        Vector_3 centroid = CGAL::NULL_VECTOR;
+        double mean_length = 0.;
+        int neighbours = 0;
+        for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh))
+        {
+          centroid = centroid + (get(qvpm, w) - CGAL::ORIGIN);
+          mean_length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(qvpm, w), old_p)));
+          ++neighbours;
+        }
+        centroid = centroid / double(neighbours);
+        mean_length /= double(neighbours);
+        tries.push_back(CGAL::ORIGIN + centroid);
+        for(std::size_t k = 0, n = tries.size(); k < n; ++k) tries.push_back(old_p + 0.5 * (tries[k] - old_p));
+        for(double step : {0.5, 0.25, 0.1})
+          for(int axis = 0; axis < 3; ++axis)
+            for(double sign : {-1., 1.})
+            {
+              double d[3] = {0., 0., 0.};
+              d[axis] = sign * step * mean_length;
+              tries.push_back(old_p + Vector_3(d[0], d[1], d[2]));
+            }
+        auto best = local_score(v);
+        Point_3 best_p = old_p;
+        for(const Point_3& t : tries)
+        {
+          const Point_3 p = place(v, t);
+          put(qvpm, v, p);
+          const auto score = local_score(v);
+          if(score > best) { best = score; best_p = p; }
+        }
+        put(qvpm, v, best_p);
+        if(best_p != old_p) ++moves;
+      }
+      stats.untangling_moves += moves;
+      if(moves == 0) return;
+    }
+  };
+  untangle(20);
 
   auto target_sum = get(CGAL::dynamic_vertex_property_t<Vector_3>(), qmesh);
   auto target_count = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
@@ -385,16 +497,14 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       if(k == 2 || get(target_count, v) == 0) continue;
       const Point_3 old_p = get(qvpm, v);
       const Point_3 target_p = CGAL::ORIGIN + get(target_sum, v) / double(get(target_count, v));
-      const double old_min = min_sj_around(v);
+      const auto old_score = local_score(v);
       bool accepted = false;
       double step = damping;
       for(int attempt = 0; attempt < 3 && !accepted; ++attempt, step *= 0.5)
       {
-        Point_3 p = old_p + step * (target_p - old_p);
-        p = (k == 1) ? lines.project(get(line_of, v), p) : tree.closest_point(p);
-        put(qvpm, v, p);
-        const double new_min = min_sj_around(v);
-        if(new_min >= (std::min)(old_min, 0.3)) accepted = true;
+        put(qvpm, v, place(v, old_p + step * (target_p - old_p)));
+        const auto new_score = local_score(v);
+        if(new_score.first >= old_score.first && new_score.second >= (std::min)(old_score.second, 0.3)) accepted = true;
       }
       if(!accepted)
       {
@@ -404,14 +514,16 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     ++stats.iterations;
   }
-  sj_figures(stats.min_scaled_jacobian_after, stats.mean_scaled_jacobian_after);
+  untangle(20);
+  sj_figures(stats.min_scaled_jacobian_after, stats.mean_scaled_jacobian_after, stats.inverted_after);
   stats.seconds = timer.time();
   if(verbose)
     std::cerr << "[smooth] " << stats.iterations << " iterations, " << stats.free_vertices << " free, "
               << stats.feature_vertices << " feature, " << stats.fixed_vertices << " fixed vertices; scaled Jacobian min "
               << stats.min_scaled_jacobian_before << " -> " << stats.min_scaled_jacobian_after << ", mean "
-              << stats.mean_scaled_jacobian_before << " -> " << stats.mean_scaled_jacobian_after << " ("
-              << stats.seconds << " s)\n";
+              << stats.mean_scaled_jacobian_before << " -> " << stats.mean_scaled_jacobian_after << ", quads with scaled Jacobian <= 0 "
+              << stats.inverted_before << " -> " << stats.inverted_after << " (" << stats.untangling_moves
+              << " untangling moves) (" << stats.seconds << " s)\n";
   return stats;
 }
 

@@ -175,19 +175,20 @@ struct Quadrangulation_layout
       const auto& corners = corners_of[p];
       const std::size_t start = (corners.front() + 1) % m;
       std::vector<std::pair<std::size_t, bool>> side;
-      std::size_t last_piece = std::size_t(-1);
+      std::pair<std::size_t, bool> last(std::size_t(-1), false);
       for(std::size_t j = 0; j < m; ++j)
       {
         const std::size_t i = (start + j) % m;
         bool reversed;
         const auto w = locate(L[i], reversed);
-        const std::size_t piece = piece_of[w.first][w.second];
-        if(piece != last_piece) { side.emplace_back(piece, reversed); last_piece = piece; }
+        const std::pair<std::size_t, bool> piece(piece_of[w.first][w.second], reversed);
+        // a piece walked there and back (a slit) is two entries: only the direction tells them apart
+        if(piece != last) { side.push_back(piece); last = piece; }
         if(std::binary_search(corners.begin(), corners.end(), i))
         {
           patch_sides[p].push_back(side);
           side.clear();
-          last_piece = std::size_t(-1);
+          last = std::make_pair(std::size_t(-1), false);
         }
       }
       if(!side.empty()) throw std::runtime_error("layout conversion: patch loop does not end at a corner");
