@@ -265,10 +265,12 @@ private:
       if(lb > -inf) max_residual_ = (std::max)(max_residual_, double(lb - x));
       if(ub < inf) max_residual_ = (std::max)(max_residual_, double(x - ub));
     }
+    std::vector<std::pair<int, double> > row;
     for(const Linear_constraint* c : Base_class::constraints_) {
       FT lb, ub; c->get_bounds(lb, ub);
       FT s = 0;
-      for(const auto& kv : c->coefficients()) s += kv.second * Base_class::result_[kv.first->index()];
+      sorted_row(c, row); // summed in variable order, not in the address order of the hash map
+      for(const auto& e : row) s += e.second * Base_class::result_[e.first];
       if(lb > -inf) max_residual_ = (std::max)(max_residual_, double(lb - s));
       if(ub < inf) max_residual_ = (std::max)(max_residual_, double(s - ub));
     }
