@@ -79,7 +79,8 @@ const char* usage_text =
   "  --html FILE.html     write a self-contained report with a 3D viewer of every stage\n"
   "  --seed N             random seed (default 0); the same input and seed give the same output\n"
   "  --threads N          worker threads (default 1)\n"
-  "  --time-limit S       time budget in seconds for the whole run (default: none)\n"
+  "  --time-limit S       time limit in seconds of each solve of the quantize stage (default: none,\n"
+  "                       a node limit; a time limit makes the output depend on the machine's speed)\n"
   "  --verbose            print progress of every stage\n"
   "  --quiet              print nothing but errors\n"
   "  --list-stages        print every stage and whether this build can run it\n"
@@ -393,9 +394,9 @@ private:
                                                                                                    *state_.layout);
     const QR::Side_quantization_problem pb =
       QR::internal::quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.quad_edge_length);
-    double limit = opt_.time_limit > 0 ? opt_.time_limit : 10.;
+    // no time limit unless asked for: the default node limit keeps the result independent of the load
     const auto st = QR::quantize_patch_sides(pb, state_.arc_edge_counts,
-                                             QRP::number_of_threads(opt_.threads).maximum_running_time(limit));
+                                             QRP::number_of_threads(opt_.threads).maximum_running_time(opt_.time_limit));
     QR::Report r = st.report();
     r["relaxed_patches"] = state_.polygons->relaxed_patches;
     r["added_corners"] = state_.polygons->added_corners;

@@ -4,6 +4,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -236,6 +237,29 @@ BOOST_AUTO_TEST_CASE(large_problem_fallback_and_time_limit)
   BOOST_CHECK_LE(st.objective, stf1.objective + 1e-6);
   std::cerr << "[quantization test] one cluster, 1 s limit: " << st.seconds << " s, status " << st.status.at(0)
             << ", objective " << st.objective << " (fallback alone " << stf.objective << ")\n";
+}
+
+// A node limit, unlike a time limit, stops every run at the same point of the search: the same result
+// on every run and with any number of threads, even when the search is cut short.
+BOOST_AUTO_TEST_CASE(node_limit_is_deterministic)
+{
+  std::mt19937 rng(5);
+  const auto pb = make_grid(30, 30, rng, true);
+  auto run = [&](unsigned threads, std::vector<int>& s) {
+    return QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(300), P::maximum_number_of_nodes(std::size_t(10)),
+                                                      P::number_of_threads(threads)));
+  };
+  std::vector<int> s1, s2, s3;
+  const auto st1 = run(1, s1);
+  const auto st2 = run(1, s2);
+  const auto st3 = run(2, s3);
+  BOOST_CHECK(std::count(st1.status.begin(), st1.status.end(), "feasible_at_limit") > 0); // the limit was hit
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s1), 0u);
+  BOOST_CHECK(s1 == s2);
+  BOOST_CHECK(s1 == s3);
+  BOOST_CHECK(st1.status == st2.status);
+  BOOST_CHECK(st1.status == st3.status);
+  BOOST_CHECK_EQUAL(st1.objective, st3.objective);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_throws)

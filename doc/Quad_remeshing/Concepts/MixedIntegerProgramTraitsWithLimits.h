@@ -18,6 +18,8 @@ class MixedIntegerProgramTraitsWithLimits
 public:
   /// Sets the wall-clock limit of `solve()` in seconds; <= 0 means none.
   void set_time_limit(double seconds);
+  /// Sets the number of branch-and-bound nodes after which `solve()` stops; 0 means none.
+  void set_node_limit(std::size_t nodes);
   /// Sets the relative gap at which the search may stop and report `OPTIMAL`.
   void set_relative_gap(double gap);
   /// Gives a feasible point (one value per variable, in creation order); a limited solve returns

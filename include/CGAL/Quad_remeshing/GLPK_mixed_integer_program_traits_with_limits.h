@@ -26,7 +26,7 @@ namespace Quad_remeshing {
 /// `MixedIntegerProgramTraitsWithLimits` (CGAL's traits only say "solved or not").
 enum class Mip_status {
   OPTIMAL,           ///< proven optimal within the relative gap
-  FEASIBLE_AT_LIMIT, ///< the time limit was reached; the best feasible solution found is returned
+  FEASIBLE_AT_LIMIT, ///< the time or node limit was reached; the best feasible solution found is returned
   INFEASIBLE,        ///< no feasible solution exists (proven by the solver)
   NO_SOLUTION,       ///< a limit was reached before any feasible solution was found
   ERROR              ///< the solver failed, or its solution violates the constraints
@@ -54,7 +54,8 @@ inline const char* to_string(Mip_status s)
 /// the incumbent when a limit stops the search, tells infeasibility apart from a limit or a failure,
 /// and verifies the bounds and constraint residuals of any solution it returns. Rows are sent to GLPK
 /// in variable-index order so that the solve is deterministic (the base class stores coefficients in
-/// hash maps keyed by pointers).
+/// hash maps keyed by pointers). A node limit bounds the search without making the result depend on
+/// the speed or load of the machine, as a time limit does.
 ///
 /// @tparam FT a floating-point number type (`double`)
 template <typename FT = double>
@@ -71,6 +72,8 @@ public:
 
   /// Sets the wall-clock limit of `solve()` in seconds; a value <= 0 or infinite means no limit.
   void set_time_limit(double seconds) { time_limit_ = seconds; }
+  /// Sets the number of branch-and-bound nodes after which `solve()` stops; 0 means no limit.
+  void set_node_limit(std::size_t nodes) { node_limit_ = nodes; }
   /// Sets the relative MIP gap at which the search stops and the solution counts as optimal.
   void set_relative_gap(double gap) { relative_gap_ = gap; }
   /// Sets the absolute tolerance used to check the residuals of a returned solution.
@@ -80,6 +83,8 @@ public:
   void set_initial_solution(const std::vector<double>& x) { initial_ = x; }
   /// The status of the last `solve()`.
   Mip_status status() const { return status_; }
+  /// The number of branch-and-bound nodes the last `solve()` created.
+  std::size_t nodes() const { return nodes_; }
   /// The largest bound or constraint violation of the returned solution.
   double max_residual() const { return max_residual_; }
 
@@ -91,6 +96,7 @@ public:
     Base_class::result_.clear();
     status_ = Mip_status::ERROR;
     max_residual_ = 0;
+    nodes_ = 0;
 
     glp_prob* lp = glp_create_prob();
     if(lp == nullptr) { Base_class::error_message_ = "failed creating GLPK program"; return false; }
@@ -141,6 +147,7 @@ public:
       p.msg_lev = GLP_MSG_OFF;
       p.presolve = GLP_ON;
       const auto start = std::chrono::steady_clock::now();
+      bool offer = false;
       if(initial_.size() == std::size_t(nv)) {
         // The heuristic callback works on the problem GLPK sees: the presolver (which changes it)
         // is replaced by an explicit root LP solve.
@@ -149,11 +156,12 @@ public:
         sp.tm_lim = time_limit_ms();
         if(glp_simplex(lp, &sp) == 0 && glp_get_status(lp) == GLP_OPT) {
           p.presolve = GLP_OFF;
-          p.cb_func = &GLPK_mixed_integer_program_traits_with_limits::offer_initial;
-          p.cb_info = this;
-          heuristic_offered_ = false;
+          offer = true;
         }
       }
+      heuristic_offered_ = !offer;
+      p.cb_func = &GLPK_mixed_integer_program_traits_with_limits::callback; // counts nodes, applies the node limit
+      p.cb_info = this;
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       p.tm_lim = time_limit_ms(spent);
       p.mip_gap = relative_gap_;
@@ -164,7 +172,7 @@ public:
       else if(st == GLP_OPT || (st == GLP_FEAS && (rc == 0 || rc == GLP_EMIPGAP)))
       { status_ = Mip_status::OPTIMAL; have = true; }
       else if(st == GLP_FEAS) { status_ = Mip_status::FEASIBLE_AT_LIMIT; have = true; }
-      else if(rc == GLP_ETMLIM) status_ = Mip_status::NO_SOLUTION;
+      else if(rc == GLP_ETMLIM || rc == GLP_ESTOP) status_ = Mip_status::NO_SOLUTION;
       if(have) read(lp, true);
     }
     // A limit hit before GLPK reached its heuristic stage: the given starting point is still the best
@@ -218,9 +226,13 @@ private:
     return (std::max)(1, static_cast<int>((time_limit_ - spent) * 1000.));
   }
 
-  static void offer_initial(glp_tree* tree, void* info)
+  static void callback(glp_tree* tree, void* info)
   {
     auto* self = static_cast<GLPK_mixed_integer_program_traits_with_limits*>(info);
+    int active = 0, current = 0, total = 0;
+    glp_ios_tree_size(tree, &active, &current, &total);
+    self->nodes_ = std::size_t(total);
+    if(self->node_limit_ > 0 && std::size_t(total) > self->node_limit_) { glp_ios_terminate(tree); return; }
     if(glp_ios_reason(tree) != GLP_IHEUR || self->heuristic_offered_) return;
     self->heuristic_offered_ = true;
     std::vector<double> x(self->initial_.size() + 1, 0.); // GLPK arrays are 1-based
@@ -253,10 +265,12 @@ private:
       if(lb > -inf) max_residual_ = (std::max)(max_residual_, double(lb - x));
       if(ub < inf) max_residual_ = (std::max)(max_residual_, double(x - ub));
     }
+    std::vector<std::pair<int, double> > row;
     for(const Linear_constraint* c : Base_class::constraints_) {
       FT lb, ub; c->get_bounds(lb, ub);
       FT s = 0;
-      for(const auto& kv : c->coefficients()) s += kv.second * Base_class::result_[kv.first->index()];
+      sorted_row(c, row); // summed in variable order, not in the address order of the hash map
+      for(const auto& e : row) s += e.second * Base_class::result_[e.first];
       if(lb > -inf) max_residual_ = (std::max)(max_residual_, double(lb - s));
       if(ub < inf) max_residual_ = (std::max)(max_residual_, double(s - ub));
     }
@@ -266,6 +280,8 @@ private:
   std::vector<double> initial_;
   bool heuristic_offered_ = false;
   double time_limit_ = 0;
+  std::size_t node_limit_ = 0;
+  std::size_t nodes_ = 0;
   double relative_gap_ = 1e-6;
   double tolerance_ = 1e-6;
   Mip_status status_ = Mip_status::ERROR;

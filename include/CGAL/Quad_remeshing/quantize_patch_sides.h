@@ -31,6 +31,7 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(quad_regularity_weight_t, quad_regularit
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(polygon_regularity_weight_t, polygon_regularity_weight, polygon_regularity_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(maximum_cluster_size_t, maximum_cluster_size, maximum_cluster_size)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(relative_mip_gap_t, relative_mip_gap, relative_mip_gap)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(maximum_number_of_nodes_t, maximum_number_of_nodes, maximum_number_of_nodes)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(use_mip_solver_t, use_mip_solver, use_mip_solver)
 
 namespace CGAL {
@@ -165,7 +166,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   `+ w_poly * sum_{3,5,6-gons} (1/n) sum_i max(0, 2 - L_i(e))` where `L_i(e) >= 2` are Tarini's
   inequalities (every separatrix at least one edge; paper Eq. 1), plus, for hexagons, a penalty when
   `e0 + e2 + e4` is odd. Arcs between clusters are first fixed to the even number nearest to their
-  target. A cluster whose solve ends with no trusted solution (time limit before any incumbent,
+  target. A cluster whose solve ends with no trusted solution (node or time limit before any incumbent,
   solver error, no GLPK) takes its values from a solver-free fallback: rounding, then parity repair
   by `+-1` along shortest paths of the patch adjacency graph between odd patches (or to the
   boundary). The result always has every `s >= 1` and every perimeter even and `>= 4`.
@@ -206,10 +207,18 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
       \cgalParamType{`std::size_t`}
       \cgalParamDefault{300}
     \cgalParamNEnd
+    \cgalParamNBegin{maximum_number_of_nodes}
+      \cgalParamDescription{branch-and-bound nodes after which each cluster's solve stops with its best
+                            solution (0: none); unlike a time limit, it gives the same result on any machine
+                            and under any load}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{3000}
+    \cgalParamNEnd
     \cgalParamNBegin{maximum_running_time}
-      \cgalParamDescription{time limit in seconds of each cluster's solve (<= 0: none)}
+      \cgalParamDescription{time limit in seconds of each cluster's solve (<= 0: none); a solve it stops
+                            has a result that depends on the speed and load of the machine}
       \cgalParamType{`double`}
-      \cgalParamDefault{10}
+      \cgalParamDefault{0}
     \cgalParamNEnd
     \cgalParamNBegin{relative_mip_gap}
       \cgalParamDescription{relative gap at which a solve stops as optimal}
@@ -250,7 +259,10 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   w.regularity_quads = choose_parameter(get_parameter(np, internal_np::quad_regularity_weight), 99.);
   w.regularity_others = choose_parameter(get_parameter(np, internal_np::polygon_regularity_weight), 91.);
   const std::size_t max_cluster = choose_parameter(get_parameter(np, internal_np::maximum_cluster_size), std::size_t(300));
-  const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 10.);
+  // a node limit by default, not a time limit: the same input gives the same output whatever the load
+  const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  const std::size_t node_limit =
+    choose_parameter(get_parameter(np, internal_np::maximum_number_of_nodes), std::size_t(3000));
   const double gap = choose_parameter(get_parameter(np, internal_np::relative_mip_gap), 1e-4);
   const bool use_solver = choose_parameter(get_parameter(np, internal_np::use_mip_solver), true);
   const unsigned threads = (std::max)(1u, static_cast<unsigned>(
@@ -290,7 +302,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
         try {
           MIPTraits mip;
           local[c] = s;
-          results[c] = internal::solve_cluster(v, clusters[c], w, time_limit, gap, local[c], mip);
+          results[c] = internal::solve_cluster(v, clusters[c], w, time_limit, node_limit, gap, local[c], mip);
         } catch(...) { results[c] = internal::Cluster_result(); }
       }
     };

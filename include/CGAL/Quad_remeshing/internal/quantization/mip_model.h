@@ -37,8 +37,8 @@ inline void arc_window(double t, int& lo, int& hi)
 // v.fixed) and writes the values of its free arcs into s. The traits object is used once.
 template <typename MIP>
 Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::size_t>& patches,
-                             const Quantization_weights& w, double time_limit, double gap,
-                             std::vector<int>& s, MIP& mip)
+                             const Quantization_weights& w, double time_limit, std::size_t node_limit,
+                             double gap, std::vector<int>& s, MIP& mip)
 {
   typedef typename MIP::Variable Variable;
   typedef typename MIP::Linear_constraint Constraint;
@@ -46,6 +46,7 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
   const Side_quantization_problem& pb = *v.problem;
   Cluster_result res;
   mip.set_time_limit(time_limit);
+  mip.set_node_limit(node_limit);
   mip.set_relative_gap(gap);
   Objective* obj = mip.create_objective(Objective::MINIMIZE);
   // The incoming s (the fallback's values) as a starting point: every auxiliary variable takes its
