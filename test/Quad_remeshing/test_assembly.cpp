@@ -290,6 +290,7 @@ BOOST_AUTO_TEST_CASE(patch_with_a_slit_is_cut_open)
     if(std::abs(p.x() - 2.) < 1e-12 && p.y() > 0.25 && p.y() < 0.75) inner_on_slit += is_border(v, q) ? 0 : 1;
   }
   BOOST_TEST(inner_on_slit == 1u);
+
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -65,4 +65,27 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
   BOOST_TEST(first == run(2));
 }
 
+// chair_doublesided (every face twice, in both orientations, many non-manifold edges) repairs into
+// thin closed sheets whose layout has patches with slits and bridges (sides that walk an arc there
+// and back): the assembly must cut them open, and the result must still be a valid quad mesh.
+BOOST_AUTO_TEST_CASE(chair_with_slit_patches)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("chair_doublesided.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q);
+  BOOST_TEST(r.find("quadrangulate") != nullptr);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(quality.faces > 1000u);
+  auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  QR::detect_evaluation_feature_edges(t, features);
+  const QR::Feature_fidelity f = QR::feature_fidelity(t, features, q);
+  BOOST_TEST_MESSAGE("chair: " << quality.faces << " quads, SJ min " << quality.min_scaled_jacobian << " Hausdorff "
+                     << f.hausdorff_max << " coverage " << f.feature_coverage);
+  BOOST_TEST(f.feature_coverage >= 0.99);
+  BOOST_TEST(f.hausdorff_max <= 0.02);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -18,6 +18,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -320,7 +321,9 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
   }
 
   // A vertex inside the mesh with only two quads, which share both its edges (the tip of a slit
-  // whose pattern has no inner edge there), has two flat corners: the two quads become one.
+  // whose pattern has no inner edge there), has two flat corners: the two quads become one (at the
+  // tip of a feature slit, this shortens the feature line by one quad edge; flat corners would be
+  // degenerate quads).
   {
     std::vector<std::vector<std::size_t>> quads_at(points.size());
     std::vector<bool> gone(quads.size(), false);
