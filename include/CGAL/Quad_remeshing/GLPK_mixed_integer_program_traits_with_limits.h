@@ -55,7 +55,8 @@ inline const char* to_string(Mip_status s)
 /// and verifies the bounds and constraint residuals of any solution it returns. Rows are sent to GLPK
 /// in variable-index order so that the solve is deterministic (the base class stores coefficients in
 /// hash maps keyed by pointers). A node limit bounds the search without making the result depend on
-/// the speed or load of the machine, as a time limit does.
+/// the speed or load of the machine, as a time limit does. Open nodes are selected by GLPK's best
+/// projection heuristic.
 ///
 /// @tparam FT a floating-point number type (`double`)
 template <typename FT = double>
@@ -165,6 +166,9 @@ public:
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       p.tm_lim = time_limit_ms(spent);
       p.mip_gap = relative_gap_;
+      // Best projection: with an incumbent from the start and a weak bound, it reaches good solutions
+      // in far fewer nodes than the default best local bound (measured on the quantization programs).
+      p.bt_tech = GLP_BT_BPH;
       rc = glp_intopt(lp, &p);
       const int st = glp_mip_status(lp);
       // GLPK reports "no primal feasible LP relaxation" as an error code, not as a status.

@@ -9,6 +9,7 @@
 #include <CGAL/Quad_remeshing/internal/quantization/problem_helpers.h>
 #include <CGAL/Quad_remeshing/internal/quantization/fallback.h>
 #include <CGAL/Quad_remeshing/internal/quantization/mip_model.h>
+#include <CGAL/Quad_remeshing/internal/quantization/local_search.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -130,22 +131,10 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
     st.isometry += d * d;
   }
   for(std::size_t p = 0; p < pb.patches.size(); ++p) {
-    const std::size_t n = pb.patches[p].size();
-    std::vector<int> e(n);
-    for(std::size_t i = 0; i < n; ++i) e[i] = side_count(v, p, i, s);
     if(perimeter(v, p, s) % 2 != 0) ++st.odd_perimeters;
     if(is_simple_patch(v, p, s)) ++st.simple_patches;
-    if(n == 4) st.quad_regularity += std::abs(e[0] - e[2]) + std::abs(e[1] - e[3]);
-    else {
-      double viol = 0;
-      for(const auto& r : tarini_rows(n)) {
-        int x = 0;
-        for(std::size_t i = 0; i < n; ++i) x += r[i] * e[i];
-        viol += (std::max)(0, 2 - x);
-      }
-      if(n == 6 && (e[0] + e[2] + e[4]) % 2 != 0) viol += 1;
-      st.polygon_regularity += viol / double(n);
-    }
+    if(pb.patches[p].size() == 4) st.quad_regularity += patch_violation(v, p, s);
+    else st.polygon_regularity += patch_violation(v, p, s);
   }
   st.objective = w.isometry * st.isometry + w.regularity_quads * st.quad_regularity +
                  w.regularity_others * st.polygon_regularity;
@@ -169,7 +158,11 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   target. A cluster whose solve ends with no trusted solution (node or time limit before any incumbent,
   solver error, no GLPK) takes its values from a solver-free fallback: rounding, then parity repair
   by `+-1` along shortest paths of the patch adjacency graph between odd patches (or to the
-  boundary). The result always has every `s >= 1` and every perimeter even and `>= 4`.
+  boundary). The fallback values, improved by a local search, are the first incumbent of every solve;
+  the merged result is improved again by the local search over the whole layout (arcs between clusters
+  included). Its moves change by the same `+-1` or `+-2` the arcs of a strip of 4-sided patches
+  (through opposite sides), keep every parity, and are taken when they lower the objective; it is
+  deterministic. The result always has every `s >= 1` and every perimeter even and `>= 4`.
 
   Singularity alignment (the paper's fourth term) is not modelled yet.
 
@@ -212,7 +205,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
                             solution (0: none); unlike a time limit, it gives the same result on any machine
                             and under any load}
       \cgalParamType{`std::size_t`}
-      \cgalParamDefault{3000}
+      \cgalParamDefault{500}
     \cgalParamNEnd
     \cgalParamNBegin{maximum_running_time}
       \cgalParamDescription{time limit in seconds of each cluster's solve (<= 0: none); a solve it stops
@@ -262,7 +255,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   // a node limit by default, not a time limit: the same input gives the same output whatever the load
   const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   const std::size_t node_limit =
-    choose_parameter(get_parameter(np, internal_np::maximum_number_of_nodes), std::size_t(3000));
+    choose_parameter(get_parameter(np, internal_np::maximum_number_of_nodes), std::size_t(500));
   const double gap = choose_parameter(get_parameter(np, internal_np::relative_mip_gap), 1e-4);
   const bool use_solver = choose_parameter(get_parameter(np, internal_np::use_mip_solver), true);
   const unsigned threads = (std::max)(1u, static_cast<unsigned>(
@@ -291,6 +284,8 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   }
   // The fallback gives every arc a value first; a successful solve overwrites its cluster's free arcs.
   internal::fallback_assignment(v, s);
+  // Improved by strip moves (clusters kept apart): a better first incumbent of every solve.
+  internal::improve_locally(v, s, w);
 
   std::vector<internal::Cluster_result> results(clusters.size());
   if constexpr(!std::is_same<MIPTraits, internal::No_mip_traits>::value) if(use_solver) {
@@ -318,6 +313,12 @@ quantize_patch_sides(const Side_quantization_problem& problem,
       for(std::size_t p : clusters[c])
         for(std::size_t a : v.patch_arcs[p]) if(v.fixed[a] == 0) s[a] = local[c][a];
     }
+  }
+  {
+    // Strip moves over the whole layout: they also cross the arcs fixed between clusters.
+    internal::Quantization_view whole = v;
+    for(std::size_t a = 0; a < problem.arcs.size(); ++a) whole.fixed[a] = problem.arcs[a].fixed;
+    internal::improve_locally(whole, s, w);
   }
   for(std::size_t c = 0; c < clusters.size(); ++c) {
     st.variables += results[c].variables;

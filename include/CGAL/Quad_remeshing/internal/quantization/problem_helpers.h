@@ -3,7 +3,9 @@
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_QUANTIZATION_PROBLEM_HELPERS_H
 #define CGAL_QUAD_REMESHING_INTERNAL_QUANTIZATION_PROBLEM_HELPERS_H
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -127,6 +129,24 @@ inline std::vector<std::vector<int> > tarini_rows(std::size_t n)
     rows.push_back(c);
   }
   return rows;
+}
+
+// The unweighted regularity violation of patch p: |e0 - e2| + |e1 - e3| for a quad; otherwise the
+// violations of Tarini's inequalities (+ 1 for an odd e0 + e2 + e4 of a hexagon), divided by n.
+inline double patch_violation(const Quantization_view& v, std::size_t p, const std::vector<int>& s)
+{
+  const std::size_t n = v.problem->patches[p].size();
+  int e[6] = {0, 0, 0, 0, 0, 0};
+  for(std::size_t i = 0; i < n; ++i) e[i] = side_count(v, p, i, s);
+  if(n == 4) return std::abs(e[0] - e[2]) + std::abs(e[1] - e[3]);
+  double viol = 0;
+  for(const auto& r : tarini_rows(n)) {
+    int x = 0;
+    for(std::size_t i = 0; i < n; ++i) x += r[i] * e[i];
+    viol += (std::max)(0, 2 - x);
+  }
+  if(n == 6 && (e[0] + e[2] + e[4]) % 2 != 0) viol += 1;
+  return viol / double(n);
 }
 
 // Whether Tarini's simple strategy applies to patch p with counts s (n = 4: opposite sides equal).
