@@ -21,6 +21,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iostream>
@@ -141,6 +142,8 @@ struct Feature_fidelity
   double hausdorff_rms = 0.;             ///< root mean square over the area samples of both directions
   double input_to_output_max = 0.;       ///< one-sided maximum, input samples to the output surface
   double output_to_input_max = 0.;       ///< one-sided maximum, output samples to the input surface
+  std::array<double, 3> input_to_output_max_point = {{0., 0., 0.}}; ///< the input point farthest from the output (absolute coordinates)
+  std::array<double, 3> output_to_input_max_point = {{0., 0., 0.}}; ///< the output point farthest from the input (absolute coordinates)
   std::size_t input_samples = 0;         ///< points sampled on the input (vertices and area)
   std::size_t output_samples = 0;        ///< points sampled on the output (vertices and area)
   double feature_length = 0.;            ///< total length of the input's feature edges (absolute units)
@@ -149,6 +152,7 @@ struct Feature_fidelity
   double feature_coverage_tight = 1.;    ///< the same within 0.1% of the diagonal
   double feature_coverage_loose = 1.;    ///< the same within 1% of the diagonal
   double feature_max_distance = 0.;      ///< largest distance from a feature sample to the output edges
+  std::array<double, 3> feature_max_point = {{0., 0., 0.}}; ///< the feature sample farthest from the output edges (absolute coordinates)
   double feature_mean_distance = 0.;     ///< length-weighted mean of those distances
   double output_feature_length = 0.;     ///< total length of the output's own feature edges, found with the same rule as the input's (absolute units)
   double output_features_on_input_features = 1.; ///< length-weighted fraction of the output's feature edges within the tolerance of an input feature edge (1 - the share of spurious creases)
@@ -157,6 +161,11 @@ struct Feature_fidelity
   /// the figures as a report record
   Report report() const
   {
+    auto point_report = [](const std::array<double, 3>& p) {
+      Report a = Report::array();
+      for(double c : p) a.push_back(c);
+      return a;
+    };
     Report r = Report::object();
     r["bbox_diagonal"] = bbox_diagonal;
     r["hausdorff_max"] = hausdorff_max;
@@ -164,6 +173,8 @@ struct Feature_fidelity
     r["hausdorff_rms"] = hausdorff_rms;
     r["input_to_output_max"] = input_to_output_max;
     r["output_to_input_max"] = output_to_input_max;
+    r["input_to_output_max_point"] = point_report(input_to_output_max_point);
+    r["output_to_input_max_point"] = point_report(output_to_input_max_point);
     r["input_samples"] = input_samples;
     r["output_samples"] = output_samples;
     r["feature_length"] = feature_length;
@@ -172,6 +183,7 @@ struct Feature_fidelity
     r["feature_coverage_0.1%"] = feature_coverage_tight;
     r["feature_coverage_1%"] = feature_coverage_loose;
     r["feature_max_distance"] = feature_max_distance;
+    r["feature_max_point"] = point_report(feature_max_point);
     r["feature_mean_distance"] = feature_mean_distance;
     r["output_feature_length"] = output_feature_length;
     r["output_features_on_input_features"] = output_features_on_input_features;
@@ -563,6 +575,8 @@ Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, con
       tq.max = std::numeric_limits<double>::infinity();
     r.input_to_output_max = tq.max / diag;
     r.output_to_input_max = qt.max / diag;
+    r.input_to_output_max_point = tq.max_point;
+    r.output_to_input_max_point = qt.max_point;
     r.hausdorff_max = (std::max)(r.input_to_output_max, r.output_to_input_max);
     const std::size_t n_area = tq.area_samples + qt.area_samples;
     if(n_area > 0)
@@ -596,7 +610,12 @@ Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, con
       double covered[3] = {0., 0., 0.}, total = 0., mean = 0., max = 0.;
       for(std::size_t i = 0; i < samples.size(); ++i)
       {
-        max = (std::max)(max, d[i]);
+        if(d[i] > max)
+        {
+          max = d[i];
+          r.feature_max_point = {{CGAL::to_double(samples[i].x()), CGAL::to_double(samples[i].y()),
+                                  CGAL::to_double(samples[i].z())}};
+        }
         total += weights[i];
         mean += weights[i] * d[i];
         for(int k = 0; k < 3; ++k)

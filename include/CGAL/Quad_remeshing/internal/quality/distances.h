@@ -16,6 +16,7 @@
 #include <CGAL/Random.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <thread>
@@ -110,6 +111,7 @@ struct One_sided_distance
   double sum = 0.;        // area samples only (so that the mean is area-weighted)
   double sum_squares = 0.;
   std::size_t area_samples = 0, vertex_samples = 0;
+  std::array<double, 3> max_point = {{0., 0., 0.}}; // where the maximum is reached (on A)
 };
 
 template <typename K, typename Tree>
@@ -154,7 +156,11 @@ One_sided_distance one_sided_distance(const std::vector<typename K::Point_3>& pt
   const std::vector<double> d = distances_to_tree(other, q, threads);
   for(std::size_t i = 0; i < d.size(); ++i)
   {
-    r.max = (std::max)(r.max, d[i]);
+    if(d[i] > r.max)
+    {
+      r.max = d[i];
+      r.max_point = {{CGAL::to_double(q[i].x()), CGAL::to_double(q[i].y()), CGAL::to_double(q[i].z())}};
+    }
     if(i < r.vertex_samples) continue;
     r.sum += d[i];
     r.sum_squares += d[i] * d[i];
