@@ -217,4 +217,25 @@ BOOST_AUTO_TEST_CASE(folded_grid_is_untangled_without_smoothing_iterations)
   for(auto v : vertices(q)) BOOST_TEST(std::abs(q.point(v).z()) < 1e-12);
 }
 
+BOOST_AUTO_TEST_CASE(untangling_never_slides_a_vertex_onto_a_corner)
+{
+  // A 3 x 3 grid whose inner vertex (1, 1) is held fixed just outside the square, at (-0.05, 0.1): the
+  // corner quad is then inverted wherever the boundary vertex (1, 0) slides on the bottom line, except
+  // when it reaches the square's corner and the quad collapses. A collapsed quad is not a repair.
+  const int n = 3;
+  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
+    if(i == 1 && j == 1) { x = -0.05; y = 0.1; }
+  });
+  Mesh& q = g.q;
+  auto fixed = get(CGAL::dynamic_vertex_property_t<bool>(), q);
+  for(auto v : vertices(q)) put(fixed, v, !is_border(v, q));
+  BOOST_TEST_REQUIRE(min_sj(q) <= 0.);
+
+  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(
+    q, g.t, g.tf, CGAL::parameters::number_of_iterations(0).vertex_is_constrained_map(fixed));
+  BOOST_TEST(s.inverted_after <= s.inverted_before);
+  for(auto e : edges(q))
+    BOOST_TEST(CGAL::squared_distance(q.point(source(e, q)), q.point(target(e, q))) > 1e-12);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -213,10 +213,13 @@ struct Feature_lines
   Before and after the smoothing iterations, quads with a scaled Jacobian <= 0 are untangled: each
   vertex of such a quad and each of its neighbours (unless fixed) tries a few positions (the
   average of its fitted-square corners, the average parallelogram completion of its quads, the
-  centroid of its neighbours, halfway to each, and small steps along the coordinate axes), each
-  projected like a smoothing move, and takes the one with the fewest incident quads with a scaled
-  Jacobian <= 0, then the largest smallest scaled Jacobian, if that is strictly better than where it
-  is. The number of such quads never grows.
+  centroid of its neighbours and halfway to each), then a pattern search in the plane of its quads
+  from the best of them (eight directions, the step halved when none helps), each position projected
+  like a smoothing move, and takes the one with the fewest incident quads with a scaled Jacobian <= 0,
+  then the largest smallest scaled Jacobian, if that is strictly better than where it is. The number
+  of such quads never grows. Here and in the smoothing moves a collapsed quad (a zero-length edge, or
+  four collinear corners) counts as the worst possible quad, so that no vertex slides onto its
+  neighbour or onto the corner at the end of its feature line.
 
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
@@ -349,9 +352,28 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     return i == 4;
   };
+  // A collapsed quad (a (nearly) zero-length edge, or all four corners (nearly) collinear, as the
+  // evaluator's degenerate faces) counts as the worst quad, so that no move trades an inverted quad
+  // for a collapsed one (sliding along a feature line can put a vertex onto the corner at its end).
   auto quad_sj = [&](q_face f) {
     std::array<Point_3, 4> pts;
-    return quad_points(f, pts) ? internal::quality::quad_scaled_jacobian(pts) : 1.;
+    if(!quad_points(f, pts)) return 1.;
+    double longest = 0.;
+    for(int i = 0; i < 4; ++i)
+    {
+      const double l = CGAL::to_double(CGAL::squared_distance(pts[i], pts[(i + 1) % 4]));
+      if(l <= same_sq) return -1.;
+      longest = (std::max)(longest, l);
+    }
+    bool collinear = true;
+    for(int i = 0; i < 4 && collinear; ++i)
+    {
+      const Vector_3 c = CGAL::cross_product(pts[i] - pts[(i + 3) % 4], pts[(i + 1) % 4] - pts[i]);
+      collinear = std::sqrt(CGAL::to_double(c.squared_length())) <= 1e-8 * longest;
+    }
+    if(collinear) return -1.;
+    const double s = internal::quality::quad_scaled_jacobian(pts);
+    return s == 0. ? -1. : s;
   };
   auto sj_figures = [&](double& mn, double& mean, std::size_t& inverted) {
     mn = 1.;
@@ -362,7 +384,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     {
       std::array<Point_3, 4> pts;
       if(!quad_points(f, pts)) continue;
-      const double s = internal::quality::quad_scaled_jacobian(pts);
+      const double s = quad_sj(f);
       mn = (std::min)(mn, s);
       mean += s;
       if(s <= 0.) ++inverted;
@@ -374,9 +396,11 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
 
   // Untangling: the vertices of quads with a scaled Jacobian <= 0, and their neighbours, try a few
   // positions (the fitted-square target, the neighbours' centroid, the parallelogram completions of
-  // their quads, small steps along the axes), each put back on the surface or on the vertex's feature
-  // line, and take the one that leaves fewest such quads around them, then the best smallest scaled
-  // Jacobian. Only strict improvements are taken, so the number of such quads never grows.
+  // their quads, halfway to each), then a pattern search in the tangent plane from the best one (eight
+  // directions, the step halved when none helps), each position put back on the surface or on the
+  // vertex's feature line. A position counts by the number of such quads around the vertex (fewer is
+  // better), then by their smallest scaled Jacobian; only strict improvements are taken, so the number
+  // of such quads never grows.
   auto local_score = [&](q_vertex v) {
     std::pair<int, double> score(0, 1.);
     for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
@@ -391,84 +415,111 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   auto place = [&](q_vertex v, const Point_3& p) {
     return get(kind, v) == 1 ? lines.project(get(line_of, v), p) : tree.closest_point(p);
   };
+  auto untangle_vertex = [&](q_vertex v) -> bool {
+    if(get(kind, v) == 2) return false;
+    const Point_3 old_p = get(qvpm, v);
+    std::vector<Point_3> tries;
+    Vector_3 square_sum = CGAL::NULL_VECTOR, completion_sum = CGAL::NULL_VECTOR, normal = CGAL::NULL_VECTOR;
+    int quads_around = 0;
+    for(q_halfedge h : halfedges_around_target(halfedge(v, qmesh), qmesh))
+    {
+      if(is_border(h, qmesh)) continue;
+      std::array<Point_3, 4> pts;
+      if(!quad_points(face(h, qmesh), pts)) continue;
+      // the corner of v in this quad: the face's halfedges start after h
+      const std::array<Point_3, 4> sq = internal::best_fit_square<Vector_3>(pts);
+      int i = 0, iv = -1;
+      for(q_halfedge g : halfedges_around_face(halfedge(face(h, qmesh), qmesh), qmesh))
+      {
+        if(g == h) iv = i;
+        ++i;
+      }
+      if(iv < 0) continue;
+      square_sum = square_sum + (sq[iv] - CGAL::ORIGIN);
+      completion_sum = completion_sum + ((pts[(iv + 1) % 4] - CGAL::ORIGIN) + (pts[(iv + 3) % 4] - pts[(iv + 2) % 4]));
+      normal = normal + CGAL::cross_product(pts[2] - pts[0], pts[3] - pts[1]);
+      ++quads_around;
+    }
+    if(quads_around == 0) return false;
+    tries.push_back(CGAL::ORIGIN + square_sum / double(quads_around));
+    tries.push_back(CGAL::ORIGIN + completion_sum / double(quads_around));
+    Vector_3 centroid = CGAL::NULL_VECTOR;
+    double mean_length = 0.;
+    int neighbours = 0;
+    for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh))
+    {
+      centroid = centroid + (get(qvpm, w) - CGAL::ORIGIN);
+      mean_length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(qvpm, w), old_p)));
+      ++neighbours;
+    }
+    centroid = centroid / double(neighbours);
+    mean_length /= double(neighbours);
+    tries.push_back(CGAL::ORIGIN + centroid);
+    for(std::size_t k = 0, n = tries.size(); k < n; ++k) tries.push_back(old_p + 0.5 * (tries[k] - old_p));
+    auto best = local_score(v);
+    Point_3 best_p = old_p;
+    auto try_position = [&](const Point_3& t) {
+      const Point_3 p = place(v, t);
+      put(qvpm, v, p);
+      const auto score = local_score(v);
+      if(score > best) { best = score; best_p = p; return true; }
+      return false;
+    };
+    for(const Point_3& t : tries) try_position(t);
+
+    // pattern search in the plane of the quads around v (any plane when they are degenerate)
+    const double nl = std::sqrt(CGAL::to_double(normal.squared_length()));
+    Vector_3 n = nl > 0. ? normal / nl : Vector_3(0., 0., 1.);
+    Vector_3 t1 = std::abs(CGAL::to_double(n.x())) < 0.9 ? CGAL::cross_product(n, Vector_3(1., 0., 0.))
+                                                         : CGAL::cross_product(n, Vector_3(0., 1., 0.));
+    t1 = t1 / std::sqrt(CGAL::to_double(t1.squared_length()));
+    const Vector_3 t2 = CGAL::cross_product(n, t1);
+    const double s2 = std::sqrt(0.5);
+    const std::array<Vector_3, 8> directions = {{t1, -t1, t2, -t2, s2 * (t1 + t2), s2 * (t1 - t2), s2 * (t2 - t1),
+                                                 -s2 * (t1 + t2)}};
+    double step = 0.5 * mean_length;
+    for(int evaluations = 0; step > 1e-3 * mean_length && evaluations < 240 && best.first < 0;)
+    {
+      bool improved = false;
+      const Point_3 from = best_p;
+      for(const Vector_3& d : directions)
+      {
+        ++evaluations;
+        if(try_position(from + step * d)) { improved = true; break; }
+      }
+      if(!improved) step *= 0.5;
+    }
+    put(qvpm, v, best_p);
+    return best_p != old_p;
+  };
   auto untangle = [&](unsigned max_passes) {
-    for(unsigned pass = 0; pass < max_passes; ++pass)
+    // every quad that gets worse is around a vertex that moved, so the work list of a pass is the bad
+    // quads around the previous pass's candidates
+    std::vector<q_face> bad;
+    for(q_face f : faces(qmesh))
+      if(quad_sj(f) <= 0.) bad.push_back(f);
+    for(unsigned pass = 0; pass < max_passes && !bad.empty(); ++pass)
     {
       std::vector<q_vertex> candidates;
-      for(q_face f : faces(qmesh))
-        if(quad_sj(f) <= 0.)
-          for(q_vertex v : vertices_around_face(halfedge(f, qmesh), qmesh))
-          {
-            candidates.push_back(v);
-            for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh)) candidates.push_back(w);
-          }
-      if(candidates.empty()) return;
+      for(q_face f : bad)
+        for(q_vertex v : vertices_around_face(halfedge(f, qmesh), qmesh))
+        {
+          candidates.push_back(v);
+          for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh)) candidates.push_back(w);
+        }
       std::sort(candidates.begin(), candidates.end());
       candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
       std::size_t moves = 0;
       for(q_vertex v : candidates)
-      {
-        if(get(kind, v) == 2) continue;
-        const Point_3 old_p = get(qvpm, v);
-        std::vector<Point_3> tries;
-        Vector_3 square_sum = CGAL::NULL_VECTOR, completion_sum = CGAL::NULL_VECTOR;
-        int quads_around = 0;
-        for(q_halfedge h : halfedges_around_target(halfedge(v, qmesh), qmesh))
-        {
-          if(is_border(h, qmesh)) continue;
-          std::array<Point_3, 4> pts;
-          if(!quad_points(face(h, qmesh), pts)) continue;
-          // the corner of v in this quad: the face's halfedges start after h
-          const std::array<Point_3, 4> sq = internal::best_fit_square<Vector_3>(pts);
-          int i = 0, iv = -1;
-          for(q_halfedge g : halfedges_around_face(halfedge(face(h, qmesh), qmesh), qmesh))
-          {
-            if(g == h) iv = i;
-            ++i;
-          }
-          if(iv < 0) continue;
-          square_sum = square_sum + (sq[iv] - CGAL::ORIGIN);
-          completion_sum = completion_sum + ((pts[(iv + 1) % 4] - CGAL::ORIGIN) + (pts[(iv + 3) % 4] - pts[(iv + 2) % 4]));
-          ++quads_around;
-        }
-        if(quads_around == 0) continue;
-        tries.push_back(CGAL::ORIGIN + square_sum / double(quads_around));
-        tries.push_back(CGAL::ORIGIN + completion_sum / double(quads_around));
-        Vector_3 centroid = CGAL::NULL_VECTOR;
-        double mean_length = 0.;
-        int neighbours = 0;
-        for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh))
-        {
-          centroid = centroid + (get(qvpm, w) - CGAL::ORIGIN);
-          mean_length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(qvpm, w), old_p)));
-          ++neighbours;
-        }
-        centroid = centroid / double(neighbours);
-        mean_length /= double(neighbours);
-        tries.push_back(CGAL::ORIGIN + centroid);
-        for(std::size_t k = 0, n = tries.size(); k < n; ++k) tries.push_back(old_p + 0.5 * (tries[k] - old_p));
-        for(double step : {0.5, 0.25, 0.1})
-          for(int axis = 0; axis < 3; ++axis)
-            for(double sign : {-1., 1.})
-            {
-              double d[3] = {0., 0., 0.};
-              d[axis] = sign * step * mean_length;
-              tries.push_back(old_p + Vector_3(d[0], d[1], d[2]));
-            }
-        auto best = local_score(v);
-        Point_3 best_p = old_p;
-        for(const Point_3& t : tries)
-        {
-          const Point_3 p = place(v, t);
-          put(qvpm, v, p);
-          const auto score = local_score(v);
-          if(score > best) { best = score; best_p = p; }
-        }
-        put(qvpm, v, best_p);
-        if(best_p != old_p) ++moves;
-      }
+        if(untangle_vertex(v)) ++moves;
       stats.untangling_moves += moves;
       if(moves == 0) return;
+      bad.clear();
+      for(q_vertex v : candidates)
+        for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
+          if(f != QGT::null_face() && quad_sj(f) <= 0.) bad.push_back(f);
+      std::sort(bad.begin(), bad.end());
+      bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
     }
   };
   untangle(20);

@@ -116,9 +116,11 @@ bool polygon_is_degenerate(const std::vector<Point_3>& pts, const std::vector<st
 template <typename Point_3>
 double quad_scaled_jacobian(const std::array<Point_3, 4>& p)
 {
-  const auto n = CGAL::cross_product(p[2] - p[0], p[3] - p[1]);
+  const auto d0 = p[2] - p[0], d1 = p[3] - p[1];
+  const auto n = CGAL::cross_product(d0, d1);
   const double nl = std::sqrt(CGAL::to_double(n.squared_length()));
-  if(!(nl > 0.)) return 0.;
+  // parallel diagonals (a flat or collapsed quad): the normal is rounding noise
+  if(!(nl > 1e-12 * std::sqrt(CGAL::to_double(d0.squared_length()) * CGAL::to_double(d1.squared_length())))) return 0.;
   double sj = std::numeric_limits<double>::infinity();
   for(int i = 0; i < 4; ++i)
   {
