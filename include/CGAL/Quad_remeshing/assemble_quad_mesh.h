@@ -277,10 +277,11 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
         const auto& chain = layout.arcs[sa.arc].vertices;
         const double s = double(arc_edge_counts[sa.arc]);
         const std::size_t m = chain.size();
+        // walking position w is chain index at(w)
+        auto at = [&](std::size_t w) { return sa.reversed ? m - 1 - w : w; };
         for(std::size_t q = 0; q < m; ++q)
         {
-          // walking position q is chain index idx; the walk step used is (q, q+1), or (q-1, q) at the end
-          auto at = [&](std::size_t w) { return sa.reversed ? m - 1 - w : w; };
+          // the walk step used is (q, q+1), or (q-1, q) at the end
           const std::size_t idx = at(q);
           const std::size_t a = q + 1 < m ? q : q - 1;
           std::size_t local_a, local_b;
@@ -370,23 +371,19 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     quad_patch.swap(kept_patch);
   }
 
-  // Says why a quad cannot be added, naming the patches involved.
-  std::map<std::pair<q_index, q_index>, std::size_t> directed_edge_quad;
-  for(std::size_t k = 0; k < quads.size(); ++k)
-    for(int i = 0; i < 4; ++i) directed_edge_quad.emplace(std::make_pair(quads[k][i], quads[k][(i + 1) % 4]), k);
+  // Says why a quad cannot be added, naming the patches involved (only called on failure).
   auto why_not_manifold = [&](std::size_t k) {
     const auto& q = quads[k];
     std::string what = "quad " + std::to_string(k) + " of patch " + std::to_string(quad_patch[k]);
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j)
         if(q[i] == q[j]) return what + " has a repeated vertex";
-    for(int i = 0; i < 4; ++i)
-    {
-      const auto it = directed_edge_quad.find(std::make_pair(q[i], q[(i + 1) % 4]));
-      if(it != directed_edge_quad.end() && it->second != k)
-        return what + " and quad " + std::to_string(it->second) + " of patch " + std::to_string(quad_patch[it->second])
-               + " use the same edge in the same direction";
-    }
+    for(std::size_t other = 0; other < quads.size(); ++other)
+      for(int i = 0; other != k && i < 4; ++i)
+        for(int j = 0; j < 4; ++j)
+          if(quads[other][j] == q[i] && quads[other][(j + 1) % 4] == q[(i + 1) % 4])
+            return what + " and quad " + std::to_string(other) + " of patch " + std::to_string(quad_patch[other])
+                   + " use the same edge in the same direction";
     return what + " would make a vertex non-manifold";
   };
   std::vector<q_vertex> vertex_of(points.size(), boost::graph_traits<QuadMesh>::null_vertex());

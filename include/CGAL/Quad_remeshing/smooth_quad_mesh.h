@@ -213,11 +213,12 @@ struct Feature_lines
   Before and after the smoothing iterations, quads with a scaled Jacobian <= 0 are untangled: each
   vertex of such a quad and each of its neighbours (unless fixed) tries a few positions (the
   average of its fitted-square corners, the average parallelogram completion of its quads, the
-  centroid of its neighbours and halfway to each), then a pattern search in the plane of its quads
-  from the best of them (eight directions, the step halved when none helps), each position projected
-  like a smoothing move, and takes the one with the fewest incident quads with a scaled Jacobian <= 0,
-  then the largest smallest scaled Jacobian, if that is strictly better than where it is. The number
-  of such quads never grows. Here and in the smoothing moves a collapsed quad (a zero-length edge, or
+  centroid of its neighbours, halfway to each, and small steps along the coordinate axes), then, if
+  one of its quads is still bad, a pattern search in the plane of its quads from the best of them
+  (eight directions, the step halved when none helps), each position projected like a smoothing
+  move, and takes the one with the fewest incident quads with a scaled Jacobian <= 0, then the
+  largest smallest scaled Jacobian, if that is strictly better than where it is. The number of such
+  quads never grows. Here and in the smoothing moves a collapsed quad (a zero-length edge, or
   four collinear corners) counts as the worst possible quad, so that no vertex slides onto its
   neighbour or onto the corner at the end of its feature line.
 
@@ -396,8 +397,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
 
   // Untangling: the vertices of quads with a scaled Jacobian <= 0, and their neighbours, try a few
   // positions (the fitted-square target, the neighbours' centroid, the parallelogram completions of
-  // their quads, halfway to each), then a pattern search in the tangent plane from the best one (eight
-  // directions, the step halved when none helps), each position put back on the surface or on the
+  // their quads, halfway to each, axis steps), then, while one of its quads is still bad, a pattern
+  // search in the tangent plane from the best one (eight directions, the step halved when none helps), each position put back on the surface or on the
   // vertex's feature line. A position counts by the number of such quads around the vertex (fewer is
   // better), then by their smallest scaled Jacobian; only strict improvements are taken, so the number
   // of such quads never grows.
@@ -456,6 +457,14 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     mean_length /= double(neighbours);
     tries.push_back(CGAL::ORIGIN + centroid);
     for(std::size_t k = 0, n = tries.size(); k < n; ++k) tries.push_back(old_p + 0.5 * (tries[k] - old_p));
+    for(double step : {0.5, 0.25, 0.1})
+      for(int axis = 0; axis < 3; ++axis)
+        for(double sign : {-1., 1.})
+        {
+          double d[3] = {0., 0., 0.};
+          d[axis] = sign * step * mean_length;
+          tries.push_back(old_p + Vector_3(d[0], d[1], d[2]));
+        }
     auto best = local_score(v);
     Point_3 best_p = old_p;
     auto try_position = [&](const Point_3& t) {
@@ -467,7 +476,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     };
     for(const Point_3& t : tries) try_position(t);
 
-    // pattern search in the plane of the quads around v (any plane when they are degenerate)
+    // when v still has a bad quad: pattern search in the plane of its quads (any plane when they are degenerate)
     const double nl = std::sqrt(CGAL::to_double(normal.squared_length()));
     Vector_3 n = nl > 0. ? normal / nl : Vector_3(0., 0., 1.);
     Vector_3 t1 = std::abs(CGAL::to_double(n.x())) < 0.9 ? CGAL::cross_product(n, Vector_3(1., 0., 0.))
