@@ -3,6 +3,7 @@
 
 #include <CGAL/Quad_remeshing/Patch_layout.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -11,6 +12,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <array>
 #include <fstream>
 #include <map>
@@ -379,6 +381,46 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   for(E e : m.edges()) if(feature[e]) BOOST_TEST(layout.is_cut(e));
   BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9); // 170/176 with the stand-in field
   BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
+}
+
+BOOST_AUTO_TEST_CASE(quad_sizing_follows_curvature)
+{
+  namespace QRI = CGAL::Quad_remeshing::internal;
+  const double L = 0.4;
+  // a cap of the unit sphere: normal curvature 1, so a quad diagonal's sagitta h^2 / 4 meets the
+  // tolerance 0.01 at h = 0.2, inside the clamp [L/4, L]
+  Mesh cap;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("hemisphere.off"), cap));
+  const CGAL::Constant_property_map<E, bool> no_feature(false);
+  std::vector<double> h = QRI::curvature_quad_sizing(cap, no_feature, L, 0.01);
+  BOOST_REQUIRE(h.size() == num_vertices(cap));
+  for(double x : h)
+  {
+    BOOST_TEST(x > 0.16);
+    BOOST_TEST(x < 0.21);
+  }
+  for(double x : QRI::curvature_quad_sizing(cap, no_feature, L, 1e-6)) BOOST_TEST(x == L / 4, boost::test_tools::tolerance(1e-12));
+  for(double x : QRI::curvature_quad_sizing(cap, no_feature, L, 1.)) BOOST_TEST(x == L);
+
+  // a flat grid bounded by straight feature lines keeps the global length: corners are not bends
+  Mesh flat = grid(8);
+  auto border = flat.add_property_map<E, bool>("e:border", false).first;
+  for(E e : flat.edges()) border[e] = flat.is_border(e);
+  for(double x : QRI::curvature_quad_sizing(flat, border, 2., 1e-3)) BOOST_TEST(x == 2.);
+
+  // fandisk mixes flat and curved parts: sizes vary, graded by at most half the edge length
+  Mesh fan;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("fandisk.off"), fan));
+  const auto fan_features = sharp_edges(fan);
+  h = QRI::curvature_quad_sizing(fan, fan_features, 0.1, 1e-4);
+  BOOST_TEST(*std::min_element(h.begin(), h.end()) < 0.05);
+  BOOST_TEST(*std::max_element(h.begin(), h.end()) == 0.1);
+  for(E e : fan.edges())
+  {
+    const std::size_t a = std::size_t(source(e, fan)), b = std::size_t(target(e, fan));
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(fan.point(source(e, fan)), fan.point(target(e, fan)))));
+    BOOST_TEST(std::abs(h[a] - h[b]) <= 0.5 * d + 1e-12);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(bad_input)

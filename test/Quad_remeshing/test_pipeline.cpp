@@ -88,4 +88,29 @@ BOOST_AUTO_TEST_CASE(chair_with_slit_patches)
   BOOST_TEST(f.hausdorff_max <= 0.02);
 }
 
+// With a sizing tolerance the quads shrink where draco's surface bends: more of them, closer to the input.
+BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
+{
+  Mesh t;
+  QR::read_and_repair(qr_test::data_file("draco_test_nm.off"), t);
+  auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  QR::detect_evaluation_feature_edges(t, features);
+  auto run = [&](double tolerance, std::size_t& faces) {
+    Mesh q;
+    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(tolerance));
+    BOOST_TEST((r.find("quantize")->find("smallest_local_quad_edge_length") != nullptr) == (tolerance > 0.));
+    const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+    BOOST_TEST(quality.valid);
+    faces = quality.faces;
+    const QR::Feature_fidelity f = QR::feature_fidelity(t, features, q);
+    BOOST_TEST_MESSAGE("draco, sizing tolerance " << tolerance << ": " << faces << " quads, Hausdorff " << f.hausdorff_max);
+    return f.hausdorff_max;
+  };
+  std::size_t uniform_faces = 0, sized_faces = 0;
+  const double uniform = run(0., uniform_faces);
+  const double sized = run(0.002, sized_faces);
+  BOOST_TEST(sized_faces > uniform_faces);
+  BOOST_TEST(sized < 0.8 * uniform);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -118,5 +118,8 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(quad_edge_length_t, quad_edge_length, qu
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_angle_t, feature_angle, feature_angle)
 /// number of worker threads a stage may use (`unsigned`, 1 = sequential)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads, number_of_threads)
+/// if > 0, quads get smaller where the surface or a feature line bends, so that a quad's sagitta
+/// stays under this fraction of the bounding-box diagonal (`double`, 0 = uniform quad edge length)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(sizing_tolerance_t, sizing_tolerance, sizing_tolerance)
 
 #endif // CGAL_QUAD_REMESHING_PARAMETERS_H

@@ -18,10 +18,12 @@
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -68,6 +70,14 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamDescription{the target edge length of the quads}
       \cgalParamType{`double`}
       \cgalParamDefault{`default_quad_edge_length(tmesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{sizing_tolerance}
+      \cgalParamDescription{if positive, quads get smaller (down to a quarter of `quad_edge_length`) where the
+                            surface or a feature line bends, so that the sagitta of a quad diagonal stays under
+                            this fraction of the bounding-box diagonal; the arcs' target edge counts are measured
+                            in the local length (see the user manual for the measured effect)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0` (the uniform `quad_edge_length`)}
     \cgalParamNEnd
     \cgalParamNBegin{feature_angle}
       \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
@@ -135,8 +145,12 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   progress("quantize");
   const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
   std::vector<int> counts;
-  report["quantize"] = quantize_patch_sides(internal::quantization_problem(tm, layout, polygons, length), counts,
+  const std::vector<double> sizing = internal::quad_sizing(
+    tm, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.));
+  report["quantize"] = quantize_patch_sides(internal::quantization_problem(tm, layout, polygons, length, sizing), counts,
     QRP::number_of_threads(choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u))).report();
+  if(!sizing.empty())
+    report["quantize"]["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
 
   progress("quadrangulate");
   const auto description = internal::layout_description(tm, layout, polygons, feature);

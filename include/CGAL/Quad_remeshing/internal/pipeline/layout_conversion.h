@@ -197,15 +197,23 @@ struct Quadrangulation_layout
 };
 
 // The arcs' targets are their field-measured lengths in quad edges (a piece of an arc gets the share
-// of its arc's field length given by its share of the arc's Euclidean length).
+// of its arc's field length given by its share of the arc's Euclidean length). With a local quad edge
+// length per vertex (`sizing`, by vertex index; empty: `quad_edge_length` everywhere), each edge of a
+// piece counts in units of the mean local length of its two ends.
 template <typename TriangleMesh, typename Layout>
 Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Layout& layout,
                                                const Quadrangulation_layout<TriangleMesh, Layout>& ql,
-                                               double quad_edge_length)
+                                               double quad_edge_length, const std::vector<double>& sizing = {})
 {
   if(!(quad_edge_length > 0)) throw std::invalid_argument("quantization_problem: the quad edge length must be positive");
   auto length = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
     return std::sqrt(CGAL::to_double(CGAL::squared_distance(tm.point(source(h, tm)), tm.point(target(h, tm)))));
+  };
+  // the global length over the local one (1 without sizing)
+  auto refinement = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
+    if(sizing.empty()) return 1.;
+    return quad_edge_length / (0.5 * (sizing[std::size_t(get(CGAL::vertex_index, tm, source(h, tm)))]
+                                      + sizing[std::size_t(get(CGAL::vertex_index, tm, target(h, tm)))]));
   };
   Side_quantization_problem pb;
   for(const auto& piece : ql.pieces)
@@ -216,7 +224,7 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
     {
       const double l = length(arc.halfedges[k]);
       total += l;
-      if(k >= piece.first && k <= piece.last) part += l;
+      if(k >= piece.first && k <= piece.last) part += sizing.empty() ? l : l * refinement(arc.halfedges[k]);
     }
     Side_quantization_problem::Arc a;
     a.target = (std::max)(arc.length * (total > 0 ? part / total : 1.) / quad_edge_length, 1e-3);

@@ -1,0 +1,157 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Local quad edge length on the remeshed triangle mesh: the global length, shortened where the
+// surface bends so much that a quad of that size would stray from it.
+
+#ifndef CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_SIZING_H
+#define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_SIZING_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Bbox_3.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+/*
+  Per vertex (indexed by `get(vertex_index, v)`, dense indices), the quad edge length h that keeps the
+  sagitta of a quad diagonal, about h^2 k / 4 on a surface of normal curvature k, under `tolerance`
+  (absolute): h = sqrt(4 tolerance / k), clamped to [min_ratio * L, L] for the global length L.
+
+  The curvature of a vertex is the largest, over its non-feature edges, of the angle between the two
+  face normals divided by the distance between the two face centroids (feature edges are creases the
+  quads follow, not bends they cut across), and, on a feature line, of the line's turning angle there
+  (below the 45 degrees of a corner) divided by the mean length of its two edges. The result is then graded, h(v) <= h(w) + grading |vw|
+  (a Dijkstra sweep from the smallest sizes), so that neighbouring quads differ little in size.
+*/
+template <typename TriangleMesh, typename EdgeIsFeature>
+std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature, double L, double tolerance,
+                                          double min_ratio = 0.25, double grading = 0.5)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto vim = get(CGAL::vertex_index, tm);
+  const std::size_t nv = num_vertices(tm);
+  std::vector<double> h(nv, L);
+  if(!(tolerance > 0.) || !(L > 0.)) return h;
+
+  typedef std::array<double, 3> V3;
+  auto point = [&](typename GT::vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  auto sub = [](const V3& a, const V3& b) { return V3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
+  auto norm = [](const V3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+  auto face_data = [&](face_descriptor f, V3& n, V3& c) {
+    const halfedge_descriptor h0 = halfedge(f, tm);
+    const V3 a = point(source(h0, tm)), b = point(target(h0, tm)), d = point(target(next(h0, tm), tm));
+    const V3 u = sub(b, a), w = sub(d, a);
+    n = V3{{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}};
+    const double l = norm(n);
+    if(!(l > 0.)) return false;
+    for(int i = 0; i < 3; ++i) { n[i] /= l; c[i] = (a[i] + b[i] + d[i]) / 3.; }
+    return true;
+  };
+
+  std::vector<double> curvature(nv, 0.);
+  for(auto e : edges(tm))
+  {
+    if(is_border(e, tm) || get(is_feature, e)) continue;
+    const halfedge_descriptor he = halfedge(e, tm);
+    V3 n0, n1, c0, c1;
+    if(!face_data(face(he, tm), n0, c0) || !face_data(face(opposite(he, tm), tm), n1, c1)) continue;
+    const double d = norm(sub(c1, c0));
+    if(!(d > 0.)) continue;
+    const double cosine = (std::max)(-1., (std::min)(1., n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2]));
+    const double k = std::acos(cosine) / d;
+    for(auto v : {source(he, tm), target(he, tm)})
+    {
+      double& kv = curvature[std::size_t(get(vim, v))];
+      kv = (std::max)(kv, k);
+    }
+  }
+  // a feature line bending at a vertex (by less than a corner's 45 degrees: corners are quad vertices
+  // anyway) is a curve the quad edges follow as chords
+  for(auto v : vertices(tm))
+  {
+    std::vector<typename GT::vertex_descriptor> ends;
+    if(halfedge(v, tm) == GT::null_halfedge()) continue;
+    for(halfedge_descriptor g : halfedges_around_target(v, tm))
+      if(get(is_feature, edge(g, tm))) ends.push_back(source(g, tm));
+    if(ends.size() != 2) continue;
+    const V3 a = sub(point(ends[0]), point(v)), b = sub(point(ends[1]), point(v));
+    const double la = norm(a), lb = norm(b);
+    if(!(la > 0.) || !(lb > 0.)) continue;
+    const double cosine = (std::max)(-1., (std::min)(1., (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb)));
+    const double turn = CGAL_PI - std::acos(cosine);
+    if(turn >= CGAL_PI / 4.) continue;
+    double& kv = curvature[std::size_t(get(vim, v))];
+    kv = (std::max)(kv, turn / (0.5 * (la + lb)));
+  }
+  for(std::size_t i = 0; i < nv; ++i)
+    if(curvature[i] > 0.)
+      h[i] = (std::max)(min_ratio * L, (std::min)(L, std::sqrt(4. * tolerance / curvature[i])));
+
+  // grading: h(v) <= h(w) + grading |vw|, smallest sizes first
+  typedef std::pair<double, std::size_t> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  std::vector<typename GT::vertex_descriptor> vertex_at(nv);
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = std::size_t(get(vim, v));
+    vertex_at[i] = v;
+    if(h[i] < L) queue.emplace(h[i], i);
+  }
+  while(!queue.empty())
+  {
+    const Item top = queue.top();
+    queue.pop();
+    if(top.first > h[top.second]) continue;
+    const auto v = vertex_at[top.second];
+    if(halfedge(v, tm) == GT::null_halfedge()) continue;
+    for(halfedge_descriptor g : halfedges_around_target(v, tm))
+    {
+      const std::size_t j = std::size_t(get(vim, source(g, tm)));
+      const double candidate = top.first + grading * norm(sub(point(source(g, tm)), point(v)));
+      if(candidate < h[j])
+      {
+        h[j] = candidate;
+        queue.emplace(candidate, j);
+      }
+    }
+  }
+  return h;
+}
+
+// `curvature_quad_sizing()` with the tolerance a fraction of the bounding-box diagonal; no sizing
+// (an empty vector: the uniform length) when that fraction is not positive.
+template <typename TriangleMesh, typename EdgeIsFeature>
+std::vector<double> quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature, double L, double relative_tolerance)
+{
+  if(!(relative_tolerance > 0.) || num_vertices(tm) == 0) return {};
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                    + CGAL::square(box.zmax() - box.zmin()));
+  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * diagonal);
+}
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_SIZING_H
