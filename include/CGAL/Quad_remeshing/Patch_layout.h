@@ -451,9 +451,10 @@ public:
   std::optional<Path> trace(const Node& start, const std::vector<Node>& ends)
   {
     update_graph();
-    std::vector<char> is_end(4 * verts_.size(), 0);
-    for(const Node& n : ends) is_end[4 * vindex_.at(n.vertex) + std::size_t(n.direction & 3)] = 1;
-    auto gp = graph_.shortest_path(4 * vindex_.at(start.vertex) + std::size_t(start.direction & 3), is_end);
+    std::vector<std::size_t> end_nodes;
+    end_nodes.reserve(ends.size());
+    for(const Node& n : ends) end_nodes.push_back(4 * vindex_.at(n.vertex) + std::size_t(n.direction & 3));
+    auto gp = graph_.shortest_path(4 * vindex_.at(start.vertex) + std::size_t(start.direction & 3), end_nodes);
     if(!gp || gp->vertices.size() < 2) return std::nullopt;
     Path p;
     for(std::size_t i = 0; i < gp->vertices.size(); ++i) {

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -45,6 +46,9 @@ struct Stop_at_end_visitor : public boost::default_dijkstra_visitor
 {
   const EndFlags* is_end;
   std::size_t skip; // the start node of a loop is the end, but not at distance 0
+  std::vector<std::size_t>* touched; // every node the search reached, to reset the search arrays
+  template <typename G>
+  void discover_vertex(std::size_t u, const G&) const { touched->push_back(u); }
   template <typename G>
   void examine_vertex(std::size_t u, const G&) const
   {
@@ -160,8 +164,8 @@ public:
   std::size_t number_of_nodes() const { return boost::num_vertices(g_) - 1; }
   std::size_t number_of_arcs() const { return boost::num_edges(g_); }
 
-  /// Shortest path from `start` to the first node with `is_end[node]` (a loop when `is_end[start]`).
-  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<char>& is_end)
+  /// Shortest path from `start` to the first of the nodes `ends` reached (a loop when `start` is one).
+  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends)
   {
     const std::size_t n = boost::num_vertices(g_);
     const std::size_t spare = n - 1;
@@ -170,35 +174,59 @@ public:
     const std::size_t source = spare;
     for(const Hop& h : direct_hops(start / 4, int(start % 4), true))
       boost::add_edge(spare, h.to, Arc{std::abs(h.drift) + length_weight_ * h.advance, -1}, g_);
-    std::vector<std::size_t> pred(n);
-    std::vector<double> dist(n, (std::numeric_limits<double>::max)());
+    // Searches stopped at a patch's boundary reach few nodes: the search arrays persist between searches
+    // and only the nodes a search reached are reset, instead of initialising all 4|V| nodes every time.
+    const double infinity = (std::numeric_limits<double>::max)();
+    if(dist_.size() != n) {
+      dist_.assign(n, infinity);
+      pred_.resize(n);
+      for(std::size_t u = 0; u < n; ++u) pred_[u] = u;
+      color_.assign(n, boost::white_color);
+      is_end_.assign(n, 0);
+    }
+    for(std::size_t e : ends) is_end_[e] = 1;
+    touched_.clear();
     Stop_at_end_visitor<std::vector<char>> vis;
-    std::vector<char> ends(is_end);
-    ends.resize(n, 0);
-    vis.is_end = &ends;
+    vis.is_end = &is_end_;
     vis.skip = source;
+    vis.touched = &touched_;
+    dist_[source] = 0.;
     std::optional<std::size_t> reached;
+    const auto index = boost::get(boost::vertex_index, g_);
     try {
-      boost::dijkstra_shortest_paths(g_, source,
-          boost::predecessor_map(boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g_)))
-              .distance_map(boost::make_iterator_property_map(dist.begin(), boost::get(boost::vertex_index, g_)))
-              .weight_map(boost::get(&Arc::weight, g_))
-              .visitor(vis));
+      boost::dijkstra_shortest_paths_no_init(g_, source, boost::make_iterator_property_map(pred_.begin(), index),
+                                             boost::make_iterator_property_map(dist_.begin(), index),
+                                             boost::get(&Arc::weight, g_), index, std::less<double>(),
+                                             boost::closed_plus<double>(infinity), 0., vis,
+                                             boost::make_iterator_property_map(color_.begin(), index));
     } catch(const Dijkstra_end_reached& r) {
       reached = r.node;
     }
     boost::clear_out_edges(spare, g_);
+    std::vector<std::size_t> nodes;
+    double cost = 0.;
+    if(reached) {
+      cost = dist_[*reached];
+      for(std::size_t u = *reached;; u = pred_[u]) {
+        nodes.push_back(u);
+        if(u == source) break;
+      }
+    }
+    for(std::size_t u : touched_) {
+      dist_[u] = infinity;
+      pred_[u] = u;
+      color_[u] = boost::white_color;
+    }
+    dist_[source] = infinity;
+    pred_[source] = source;
+    color_[source] = boost::white_color;
+    for(std::size_t e : ends) is_end_[e] = 0;
     if(!reached) return std::nullopt;
 
-    std::vector<std::size_t> nodes;
-    for(std::size_t u = *reached;; u = pred[u]) {
-      nodes.push_back(u);
-      if(u == source) break;
-    }
     nodes.back() = start;
     std::reverse(nodes.begin(), nodes.end());
     Graph_path p;
-    p.cost = dist[*reached];
+    p.cost = cost;
     for(std::size_t i = 0; i < nodes.size(); ++i) {
       if(i > 0) {
         // recover the middle node of a two-hop arc (the lightest arc between the two nodes); the first step
@@ -264,6 +292,12 @@ private:
   }
 
   Graph g_;
+  // search arrays kept between searches (see shortest_path())
+  std::vector<double> dist_;
+  std::vector<std::size_t> pred_;
+  std::vector<boost::default_color_type> color_;
+  std::vector<char> is_end_;
+  std::vector<std::size_t> touched_;
   const std::vector<std::array<Vector_3, 4>>* frames_ = nullptr;
   const std::vector<std::vector<std::size_t>>* nbrs_ = nullptr;
   const std::vector<char>* singular_ = nullptr;
