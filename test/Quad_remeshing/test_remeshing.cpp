@@ -139,12 +139,14 @@ BOOST_AUTO_TEST_CASE(sliver_cad_mesh)
   BOOST_CHECK_GT(o.stats.mean_angle_after, 55.);
 }
 
-// Known gap: collapses along the curved hole borders leave chords; measured 0.26% Hausdorff and 66 of the
-// input feature midpoints farther than 0.1% of the diagonal from an output feature edge.
-BOOST_AUTO_TEST_CASE(plate_with_holes) { check_remeshing("plate_holes.off", 3e-3, 80); }
+// The uniform pass alone left chords along the curved hole borders (0.26% Hausdorff, 66 input feature
+// midpoints farther than 0.1% of the diagonal from an output feature edge); the adaptive pass splits them
+// back onto the input lines: measured 0.14% and 13 such midpoints (where pass 1 collapsed feature
+// edges and the field did not ask for a split).
+BOOST_AUTO_TEST_CASE(plate_with_holes) { check_remeshing("plate_holes.off", 2e-3, 20); }
 
-// Known gap: measured 0.68% Hausdorff at the default density (the spec asks 0.2%).
-BOOST_AUTO_TEST_CASE(organic) { check_remeshing("spot.off", 8e-3); }
+// The uniform pass alone measured 0.68% Hausdorff here.
+BOOST_AUTO_TEST_CASE(organic) { check_remeshing("spot.off"); }
 
 BOOST_AUTO_TEST_CASE(open_mesh) { check_remeshing("hemisphere.off"); }
 
