@@ -137,7 +137,24 @@ private:
     }
     else
       q = ref_.surface.closest_point(m, point(source(h, tm_))); // the search starts from an endpoint
-    return CGAL::to_double(CGAL::squared_distance(m, q)) <= (feature ? 0.0625 : 0.25) * l * l ? q : m;
+    if(!(CGAL::to_double(CGAL::squared_distance(m, q)) <= (feature ? 0.0625 : 0.25) * l * l)) return m;
+    // the projection must not land near an endpoint (e.g. on an input corner that is already a vertex)
+    // nor fold a face of the edge: the midpoint itself is used then
+    const Point& a = point(source(h, tm_));
+    const Point& b = point(target(h, tm_));
+    if(CGAL::to_double(CGAL::squared_distance(a, q)) < 0.09 * l * l ||
+       CGAL::to_double(CGAL::squared_distance(b, q)) < 0.09 * l * l)
+      return m;
+    for(halfedge_descriptor g : {h, opposite(h, tm_)})
+    {
+      if(is_border(g, tm_)) continue;
+      const Point& c = point(target(next(g, tm_), tm_));
+      const Point& u = point(source(g, tm_));
+      const Point& w = point(target(g, tm_));
+      const Vector n = normal(u, w, c);
+      if(cosine(n, normal(u, q, c)) < 0.5 || cosine(n, normal(q, w, c)) < 0.5) return m;
+    }
+    return q;
   }
 
   // Splits the edge of `h` at `p` and triangulates both sides; the new edges are not features.
