@@ -152,7 +152,7 @@ private:
       const Point& u = point(source(g, tm_));
       const Point& w = point(target(g, tm_));
       const Vector n = normal(u, w, c);
-      if(cosine(n, normal(u, q, c)) < 0.5 || cosine(n, normal(q, w, c)) < 0.5) return m;
+      if(cosine(n, normal(u, q, c)) < 0. || cosine(n, normal(q, w, c)) < 0.) return m;
     }
     return q;
   }
