@@ -62,7 +62,7 @@ const char* usage_text =
   "                   [--sizing-tolerance F] [--feature-angle DEG] [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
-  "                   [--html FILE.html] [--verbose | --quiet] [--help]\n"
+  "                   [--html FILE.html] [--adaptive-remeshing] [--verbose | --quiet] [--help]\n"
   "\n"
   "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
   "lines (sharp creases and boundaries) as chains of edges.\n"
@@ -86,6 +86,7 @@ const char* usage_text =
   "  --threads N          worker threads (default 1)\n"
   "  --time-limit S       time limit in seconds of each solve of the quantize stage (default: none,\n"
   "                       a node limit; a time limit makes the output depend on the machine's speed)\n"
+  "  --adaptive-remeshing run the adaptive remeshing pass (experimental)\n"
   "  --verbose            print progress of every stage\n"
   "  --quiet              print nothing but errors\n"
   "  --list-stages        print every stage and whether this build can run it\n"
@@ -103,7 +104,7 @@ struct Options
   double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.;
   long faces = 0;
   unsigned seed = 0, threads = 1;
-  bool verbose = false, quiet = false;
+  bool verbose = false, quiet = false, adaptive_remeshing = false;
 };
 
 double parse_number(const std::string& option, const std::string& text, double min_value)
@@ -154,6 +155,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--time-limit") o.time_limit = parse_number(a, value(), 0.);
     else if(a == "--sizing-tolerance") o.sizing_tolerance = parse_number(a, value(), 0.);
     else if(a == "--verbose" || a == "-v") o.verbose = true;
+    else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option '" + a + "'");
     else if(o.input.empty()) o.input = a;
@@ -347,6 +349,7 @@ private:
     const QR::Remeshing_statistics st = QR::remesh_for_quadrangulation(
       state_.tmesh, state_.feature,
       QRP::combine(QRP::quad_edge_length(state_.quad_edge_length).verbose(opt_.verbose),
+                   QRP::adaptive_remeshing(opt_.adaptive_remeshing),
                    QRP::vertex_is_feature_corner_map(state_.corner)));
     // later stages index elements densely: drop the removed ones (property maps are compacted with them)
     state_.tmesh.collect_garbage();

@@ -59,11 +59,22 @@ Outcome check_remeshing(const std::string& name, double max_hausdorff = 2e-3, st
                                 CGAL::square(bb.zmax() - bb.zmin()));
 
   Outcome out;
-  out.stats = QR::remesh_for_quadrangulation(m, f, QR::parameters::vertex_is_feature_corner_map(c));
+  auto sizing = m.add_property_map<Mesh::Vertex_index, double>("v:size", -1.).first;
+  out.stats = QR::remesh_for_quadrangulation(
+    m, f, QR::parameters::combine(QR::parameters::vertex_is_feature_corner_map(c), QR::parameters::vertex_sizing_map(sizing),
+                                  QR::parameters::adaptive_remeshing(true)));
   BOOST_REQUIRE(m.is_valid(false));
   BOOST_REQUIRE(CGAL::is_triangle_mesh(m));
   BOOST_CHECK_EQUAL(out.stats.faces_after, m.number_of_faces());
   BOOST_CHECK_GT(m.number_of_faces(), 1000u);
+  // the adaptive pass stays within about 3 times the faces of the uniform pass
+  BOOST_CHECK_LE(double(out.stats.faces_after), 3. * double(out.stats.faces_uniform));
+  // the sizing field reaches the caller, within [L / 8, L]
+  for(auto v : m.vertices())
+  {
+    BOOST_CHECK_GE(sizing[v], out.stats.target_edge_length / 8. * (1. - 1e-9));
+    BOOST_CHECK_LE(sizing[v], out.stats.target_edge_length * (1. + 1e-9));
+  }
 
   // every input feature line is still covered by output feature edges
   std::vector<Kernel::Segment_3> segments;
@@ -129,14 +140,39 @@ BOOST_AUTO_TEST_CASE(sliver_cad_mesh)
   BOOST_CHECK_GT(o.stats.mean_angle_after, 55.);
 }
 
-// Known gap: collapses along the curved hole borders leave chords; measured 0.26% Hausdorff and 66 of the
-// input feature midpoints farther than 0.1% of the diagonal from an output feature edge.
-BOOST_AUTO_TEST_CASE(plate_with_holes) { check_remeshing("plate_holes.off", 3e-3, 80); }
+// The uniform pass alone left chords along the curved hole borders (0.26% Hausdorff, 66 input feature
+// midpoints farther than 0.1% of the diagonal from an output feature edge); the adaptive pass splits them
+// back onto the input lines: measured 0.14% and 13 such midpoints (where pass 1 collapsed feature
+// edges and the field did not ask for a split).
+BOOST_AUTO_TEST_CASE(plate_with_holes) { check_remeshing("plate_holes.off", 2e-3, 20); }
 
-// Known gap: measured 0.68% Hausdorff at the default density (the spec asks 0.2%).
-BOOST_AUTO_TEST_CASE(organic) { check_remeshing("spot.off", 8e-3); }
+// The uniform pass alone measured 0.68% Hausdorff here; the adaptive pass measured 0.19-0.20% (the
+// sampled check varies), hence the 10% margin.
+BOOST_AUTO_TEST_CASE(organic) { check_remeshing("spot.off", 2.2e-3); }
 
 BOOST_AUTO_TEST_CASE(open_mesh) { check_remeshing("hemisphere.off"); }
+
+// The uniform pass alone (the default): the sizing field is the uniform length; a looser tolerance refines less.
+BOOST_AUTO_TEST_CASE(adaptive_parameters)
+{
+  Mesh m = load("fandisk.off");
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  QR::detect_feature_edges(m, f);
+  Mesh u = m, loose = m;
+  auto fu = u.property_map<Mesh::Edge_index, bool>("e:f").first;
+  auto fl = loose.property_map<Mesh::Edge_index, bool>("e:f").first;
+  auto size = u.add_property_map<Mesh::Vertex_index, double>("v:size", -1.).first;
+  const auto su = QR::remesh_for_quadrangulation(u, fu, QR::parameters::vertex_sizing_map(size));
+  for(auto v : u.vertices()) BOOST_CHECK_CLOSE(size[v], su.target_edge_length, 1e-9);
+  BOOST_CHECK_EQUAL(su.adaptive_rounds, 0u);
+  BOOST_CHECK_LE(su.faces_after, su.faces_uniform + su.split_vertices * 4);
+  const auto sd = QR::remesh_for_quadrangulation(m, f, QR::parameters::adaptive_remeshing(true));
+  const auto sl = QR::remesh_for_quadrangulation(
+    loose, fl, QR::parameters::combine(QR::parameters::adaptive_remeshing(true), QR::parameters::remeshing_tolerance(0.05)));
+  BOOST_CHECK_LE(sl.distance_after, 0.05);
+  BOOST_CHECK_LE(sd.distance_after, 0.002);
+  BOOST_CHECK_LE(sl.adaptive_rounds, sd.adaptive_rounds);
+}
 
 BOOST_AUTO_TEST_CASE(density_helpers)
 {

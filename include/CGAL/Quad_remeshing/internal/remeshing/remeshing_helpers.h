@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL Quad_remeshing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Helpers of remesh_for_quadrangulation(): triangle figures, sizing buckets, final face splitting.
+// Helpers of remesh_for_quadrangulation(): triangle figures, radius ratio, final face splitting.
 
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_REMESHING_REMESHING_HELPERS_H
 #define CGAL_QUAD_REMESHING_INTERNAL_REMESHING_REMESHING_HELPERS_H
@@ -61,70 +61,14 @@ double radius_ratio(const Point& p, const Point& q, const Point& r)
   return std::max(0., std::min(1., v));
 }
 
-// Length multipliers of the adaptive pass, one bucket each (remeshed one after the other).
-inline const std::array<double, 5>& sizing_levels()
-{
-  static const std::array<double, 5> levels = {{0.3, 0.55, 1., 1.75, 3.}};
-  return levels;
-}
-
-// Per face: 1 + index in sizing_levels() of the multiplier derived from the (vertex-smoothed) radius ratio,
-// mapped linearly from [10th percentile, max] to [0.3, 3] (the worst 10% clamped to 0.3).
-template <typename TriangleMesh, typename VPM, typename FaceLabelMap>
-void sizing_buckets(const TriangleMesh& tmesh, const VPM& vpm, FaceLabelMap label)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Face;
-  std::vector<Face> fs(faces(tmesh).begin(), faces(tmesh).end());
-  if(fs.empty()) return;
-  auto fq = get(CGAL::dynamic_face_property_t<double>(), tmesh);
-  auto vq = get(CGAL::dynamic_vertex_property_t<double>(), tmesh);
-  for(Face f : fs)
-  {
-    auto h = halfedge(f, tmesh);
-    put(fq, f, radius_ratio(get(vpm, source(h, tmesh)), get(vpm, target(h, tmesh)),
-                            get(vpm, target(next(h, tmesh), tmesh))));
-  }
-  // smoothing over the one-ring so that buckets form regions, not speckles
-  for(vertex_descriptor v : vertices(tmesh))
-  {
-    double s = 0.; int n = 0;
-    for(Face f : faces_around_target(halfedge(v, tmesh), tmesh))
-      if(f != boost::graph_traits<TriangleMesh>::null_face()) { s += get(fq, f); ++n; }
-    put(vq, v, n ? s / n : 1.);
-  }
-  std::vector<double> q;
-  q.reserve(fs.size());
-  for(Face f : fs)
-  {
-    double s = 0.;
-    for(vertex_descriptor v : vertices_around_face(halfedge(f, tmesh), tmesh)) s += get(vq, v);
-    q.push_back(s / 3.);
-  }
-  std::vector<double> sorted = q;
-  const std::size_t k = sorted.size() / 10;
-  std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
-  const double q10 = sorted[k];
-  const double qmax = *std::max_element(q.begin(), q.end());
-  const auto& levels = sizing_levels();
-  for(std::size_t i = 0; i < fs.size(); ++i)
-  {
-    double m = 1.;
-    if(qmax - q10 > 1e-9)
-      m = 0.3 + 2.7 * std::max(0., std::min(1., (q[i] - q10) / (qmax - q10)));
-    std::size_t best = 0;
-    for(std::size_t l = 1; l < levels.size(); ++l)
-      if(std::abs(std::log(m / levels[l])) < std::abs(std::log(m / levels[best]))) best = l;
-    put(label, fs[i], int(best + 1));
-  }
-}
-
 // Final refinement (paper, Figure 5): a face whose three edges are features gets a centre vertex; then
 // every non-feature edge joining two feature vertices is split at its midpoint (projected on `tree`),
 // which also splits every face with two feature edges (their third edge is such an edge).
-// Returns the number of vertices inserted.
+// Returns the number of vertices inserted, and appends them to `*inserted_vertices` if given.
 template <typename TriangleMesh, typename VPM, typename EdgeIsFeatureMap, typename Tree>
-std::size_t split_feature_faces(TriangleMesh& tmesh, const VPM& vpm, EdgeIsFeatureMap efm, const Tree& tree)
+std::size_t split_feature_faces(TriangleMesh& tmesh, const VPM& vpm, EdgeIsFeatureMap efm, const Tree& tree,
+                                std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>*
+                                  inserted_vertices = nullptr)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
@@ -147,6 +91,7 @@ std::size_t split_feature_faces(TriangleMesh& tmesh, const VPM& vpm, EdgeIsFeatu
                                    get(vpm, target(next(h, tmesh), tmesh)));
     const halfedge_descriptor hc = CGAL::Euler::add_center_vertex(h, tmesh);
     put(vpm, target(hc, tmesh), c);
+    if(inserted_vertices) inserted_vertices->push_back(target(hc, tmesh));
     for(halfedge_descriptor g : halfedges_around_target(hc, tmesh)) put(efm, edge(g, tmesh), false);
     ++inserted;
   }
@@ -167,6 +112,7 @@ std::size_t split_feature_faces(TriangleMesh& tmesh, const VPM& vpm, EdgeIsFeatu
     const Point m = tree.closest_point(CGAL::midpoint(get(vpm, source(h, tmesh)), get(vpm, target(h, tmesh))));
     const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tmesh); // a -> m, followed by h: m -> b
     put(vpm, target(hnew, tmesh), m);
+    if(inserted_vertices) inserted_vertices->push_back(target(hnew, tmesh));
     put(efm, edge(hnew, tmesh), false);
     put(efm, edge(h, tmesh), false);
     const halfedge_descriptor oh = opposite(h, tmesh); // b -> m, followed by m -> a
