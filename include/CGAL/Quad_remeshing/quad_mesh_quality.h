@@ -7,6 +7,7 @@
 #ifndef CGAL_QUAD_REMESHING_QUAD_MESH_QUALITY_H
 #define CGAL_QUAD_REMESHING_QUAD_MESH_QUALITY_H
 
+#include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/quality/distances.h>
@@ -547,8 +548,7 @@ Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, con
   CGAL::Bbox_3 box;
   for(const auto& f : tpolys)
     for(std::size_t v : f) box += tpts[v].bbox();
-  const double diag = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                CGAL::square(box.zmax() - box.zmin()));
+  const double diag = internal::bbox_diagonal(box);
   r.bbox_diagonal = diag;
   r.coverage_tolerance = settings.tolerance;
 

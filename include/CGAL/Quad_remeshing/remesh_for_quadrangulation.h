@@ -7,6 +7,7 @@
 #ifndef CGAL_QUAD_REMESHING_REMESH_FOR_QUADRANGULATION_H
 #define CGAL_QUAD_REMESHING_REMESH_FOR_QUADRANGULATION_H
 
+#include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/features/feature_graph.h>
@@ -434,8 +435,7 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   for(vertex_descriptor v : vertices(tmesh)) reference.points.push_back(get(vpm, v));
   reference.build();
   const CGAL::Bbox_3 box = PMP::bbox(tmesh, CGAL::parameters::vertex_point_map(vpm));
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = internal::bbox_diagonal(box);
 
   // corners: given, or computed from the features
   const auto given_corners = get_parameter(np, internal_np::vertex_is_feature_corner_map);

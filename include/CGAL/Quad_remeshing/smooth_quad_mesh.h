@@ -6,6 +6,7 @@
 #ifndef CGAL_QUAD_REMESHING_SMOOTH_QUAD_MESH_H
 #define CGAL_QUAD_REMESHING_SMOOTH_QUAD_MESH_H
 
+#include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
@@ -304,9 +305,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // a scale for "at the same place"
   CGAL::Bbox_3 bb;
   for(auto v : vertices(tmesh)) bb += get(tvpm, v).bbox();
-  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin())
-                                + CGAL::square(bb.zmax() - bb.zmin()));
-  const double same_sq = CGAL::square(1e-7 * diag);
+  const double same_sq = CGAL::square(1e-7 * internal::bbox_diagonal(bb));
 
   // classify the quad vertices: 0 free, 1 on a feature line, 2 fixed
   auto kind = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
@@ -359,20 +358,11 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   auto quad_sj = [&](q_face f) {
     std::array<Point_3, 4> pts;
     if(!quad_points(f, pts)) return 1.;
-    double longest = 0.;
     for(int i = 0; i < 4; ++i)
-    {
-      const double l = CGAL::to_double(CGAL::squared_distance(pts[i], pts[(i + 1) % 4]));
-      if(l <= same_sq) return -1.;
-      longest = (std::max)(longest, l);
-    }
-    bool collinear = true;
-    for(int i = 0; i < 4 && collinear; ++i)
-    {
-      const Vector_3 c = CGAL::cross_product(pts[i] - pts[(i + 3) % 4], pts[(i + 1) % 4] - pts[i]);
-      collinear = std::sqrt(CGAL::to_double(c.squared_length())) <= 1e-8 * longest;
-    }
-    if(collinear) return -1.;
+      if(CGAL::to_double(CGAL::squared_distance(pts[i], pts[(i + 1) % 4])) <= same_sq) return -1.;
+    // a wider margin than the evaluator's (1e-12): nearly collinear is as bad as collinear here
+    if(internal::quality::polygon_corners_are_flat(4, [&](std::size_t i) -> const Point_3& { return pts[i]; }, 1e-8))
+      return -1.;
     const double s = internal::quality::quad_scaled_jacobian(pts);
     return s == 0. ? -1. : s;
   };

@@ -212,14 +212,12 @@ public:
         if(u == source) break;
       }
     }
+    // the search discovers the source first, so this resets it too
     for(std::size_t u : touched_) {
       dist_[u] = infinity;
       pred_[u] = u;
       color_[u] = boost::white_color;
     }
-    dist_[source] = infinity;
-    pred_[source] = source;
-    color_[source] = boost::white_color;
     for(std::size_t e : ends) is_end_[e] = 0;
     if(!reached) return std::nullopt;
 

@@ -209,7 +209,7 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
   auto length = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
     return std::sqrt(CGAL::to_double(CGAL::squared_distance(tm.point(source(h, tm)), tm.point(target(h, tm)))));
   };
-  // the global length over the local one (1 without sizing)
+  // the global length over the local one; exactly 1 without sizing (l * 1. == l: uniform targets unchanged)
   auto refinement = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
     if(sizing.empty()) return 1.;
     return quad_edge_length / (0.5 * (sizing[std::size_t(get(CGAL::vertex_index, tm, source(h, tm)))]
@@ -224,7 +224,7 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
     {
       const double l = length(arc.halfedges[k]);
       total += l;
-      if(k >= piece.first && k <= piece.last) part += sizing.empty() ? l : l * refinement(arc.halfedges[k]);
+      if(k >= piece.first && k <= piece.last) part += l * refinement(arc.halfedges[k]);
     }
     Side_quantization_problem::Arc a;
     a.target = (std::max)(arc.length * (total > 0 ? part / total : 1.) / quad_edge_length, 1e-3);

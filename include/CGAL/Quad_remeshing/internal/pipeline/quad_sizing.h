@@ -7,6 +7,8 @@
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_SIZING_H
 #define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_SIZING_H
 
+#include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
+#include <CGAL/Quad_remeshing/internal/cross_field/face_geometry.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Bbox_3.h>
@@ -49,19 +51,15 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   std::vector<double> h(nv, L);
   if(!(tolerance > 0.) || !(L > 0.)) return h;
 
-  typedef std::array<double, 3> V3;
   auto point = [&](typename GT::vertex_descriptor v) {
     const auto& p = get(vpm, v);
-    return V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    return Vec3d{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
   };
-  auto sub = [](const V3& a, const V3& b) { return V3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
-  auto norm = [](const V3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
-  auto face_data = [&](face_descriptor f, V3& n, V3& c) {
+  auto face_data = [&](face_descriptor f, Vec3d& n, Vec3d& c) {
     const halfedge_descriptor h0 = halfedge(f, tm);
-    const V3 a = point(source(h0, tm)), b = point(target(h0, tm)), d = point(target(next(h0, tm), tm));
-    const V3 u = sub(b, a), w = sub(d, a);
-    n = V3{{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}};
-    const double l = norm(n);
+    const Vec3d a = point(source(h0, tm)), b = point(target(h0, tm)), d = point(target(next(h0, tm), tm));
+    n = v_cross(v_sub(b, a), v_sub(d, a));
+    const double l = v_norm(n);
     if(!(l > 0.)) return false;
     for(int i = 0; i < 3; ++i) { n[i] /= l; c[i] = (a[i] + b[i] + d[i]) / 3.; }
     return true;
@@ -72,11 +70,11 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   {
     if(is_border(e, tm) || get(is_feature, e)) continue;
     const halfedge_descriptor he = halfedge(e, tm);
-    V3 n0, n1, c0, c1;
+    Vec3d n0, n1, c0, c1;
     if(!face_data(face(he, tm), n0, c0) || !face_data(face(opposite(he, tm), tm), n1, c1)) continue;
-    const double d = norm(sub(c1, c0));
+    const double d = v_norm(v_sub(c1, c0));
     if(!(d > 0.)) continue;
-    const double cosine = (std::max)(-1., (std::min)(1., n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2]));
+    const double cosine = (std::max)(-1., (std::min)(1., v_dot(n0, n1)));
     const double k = std::acos(cosine) / d;
     for(auto v : {source(he, tm), target(he, tm)})
     {
@@ -93,10 +91,10 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
     for(halfedge_descriptor g : halfedges_around_target(v, tm))
       if(get(is_feature, edge(g, tm))) ends.push_back(source(g, tm));
     if(ends.size() != 2) continue;
-    const V3 a = sub(point(ends[0]), point(v)), b = sub(point(ends[1]), point(v));
-    const double la = norm(a), lb = norm(b);
+    const Vec3d a = v_sub(point(ends[0]), point(v)), b = v_sub(point(ends[1]), point(v));
+    const double la = v_norm(a), lb = v_norm(b);
     if(!(la > 0.) || !(lb > 0.)) continue;
-    const double cosine = (std::max)(-1., (std::min)(1., (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb)));
+    const double cosine = (std::max)(-1., (std::min)(1., v_dot(a, b) / (la * lb)));
     const double turn = CGAL_PI - std::acos(cosine);
     if(turn >= CGAL_PI / 4.) continue;
     double& kv = curvature[std::size_t(get(vim, v))];
@@ -126,7 +124,7 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
     for(halfedge_descriptor g : halfedges_around_target(v, tm))
     {
       const std::size_t j = std::size_t(get(vim, source(g, tm)));
-      const double candidate = top.first + grading * norm(sub(point(source(g, tm)), point(v)));
+      const double candidate = top.first + grading * v_norm(v_sub(point(source(g, tm)), point(v)));
       if(candidate < h[j])
       {
         h[j] = candidate;
@@ -145,9 +143,7 @@ std::vector<double> quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature
   if(!(relative_tolerance > 0.) || num_vertices(tm) == 0) return {};
   CGAL::Bbox_3 box;
   for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
-                                    + CGAL::square(box.zmax() - box.zmin()));
-  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * diagonal);
+  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * bbox_diagonal(box));
 }
 
 } // namespace internal

@@ -89,6 +89,24 @@ struct Soup_edges
   std::size_t size() const { return ends.size(); }
 };
 
+// True when every corner of the closed polygon `point(0)`, ..., `point(n - 1)` is flat: the cross product
+// of its two sides is at most `relative_tolerance` times the squared longest side (zero area).
+template <typename PointAt>
+bool polygon_corners_are_flat(std::size_t n, PointAt point, double relative_tolerance)
+{
+  double longest2 = 0.;
+  for(std::size_t i = 0; i < n; ++i)
+    longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(point(i), point((i + 1) % n))));
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const auto a = point(i) - point((i + n - 1) % n);
+    const auto b = point((i + 1) % n) - point(i);
+    if(std::sqrt(CGAL::to_double(CGAL::cross_product(a, b).squared_length())) > relative_tolerance * longest2)
+      return false;
+  }
+  return true;
+}
+
 template <typename Point_3>
 bool polygon_is_degenerate(const std::vector<Point_3>& pts, const std::vector<std::size_t>& f)
 {
@@ -97,17 +115,7 @@ bool polygon_is_degenerate(const std::vector<Point_3>& pts, const std::vector<st
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t j = i + 1; j < n; ++j)
       if(f[i] == f[j] || pts[f[i]] == pts[f[j]]) return true;
-  // zero area: every corner is flat, relative to the longest side
-  double longest2 = 0.;
-  for(std::size_t i = 0; i < n; ++i)
-    longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(pts[f[i]], pts[f[(i + 1) % n]])));
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const auto a = pts[f[i]] - pts[f[(i + n - 1) % n]];
-    const auto b = pts[f[(i + 1) % n]] - pts[f[i]];
-    if(std::sqrt(CGAL::to_double(CGAL::cross_product(a, b).squared_length())) > 1e-12 * longest2) return false;
-  }
-  return true;
+  return polygon_corners_are_flat(n, [&](std::size_t i) -> const Point_3& { return pts[f[i]]; }, 1e-12);
 }
 
 // Verdict's quad scaled Jacobian: the smallest corner sine, signed by the normal of the quad's
