@@ -125,6 +125,23 @@ void check_field(const Mesh& m, Mesh::Property_map<edge_descriptor, bool> fm, Me
   BOOST_TEST_MESSAGE("aligned faces checked: " << checked);
 }
 
+// Pairs of singularities of opposite index closer than `factor` mean edge lengths (straight-line distance).
+std::size_t close_opposite_pairs(const Mesh& m, Mesh::Property_map<vertex_descriptor, int> sing, double factor)
+{
+  double mean = 0.;
+  for(edge_descriptor e : edges(m)) mean += std::sqrt(CGAL::squared_distance(m.point(source(halfedge(e, m), m)),
+                                                                            m.point(target(halfedge(e, m), m))));
+  mean /= double(num_edges(m));
+  std::vector<vertex_descriptor> s;
+  for(vertex_descriptor v : vertices(m)) if(get(sing, v) != 0) s.push_back(v);
+  std::size_t pairs = 0;
+  for(std::size_t i = 0; i < s.size(); ++i)
+    for(std::size_t j = i + 1; j < s.size(); ++j)
+      if(get(sing, s[i]) * get(sing, s[j]) < 0 &&
+         CGAL::squared_distance(m.point(s[i]), m.point(s[j])) < factor * factor * mean * mean) ++pairs;
+  return pairs;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(cross_field)
@@ -194,7 +211,8 @@ BOOST_AUTO_TEST_CASE(index_of_prescribed_fields)
 BOOST_AUTO_TEST_CASE(closed_meshes_index_sum_is_euler_characteristic)
 {
   // without features, the indices of a closed mesh sum to its Euler characteristic (in full turns)
-  const std::vector<std::pair<std::string, int>> cases = {{"spot.off", 2}, {"fertility.off", -6}};
+  const std::vector<std::pair<std::string, int>> cases = {
+    {"spot.off", 2}, {"bunny.off", 2}, {"fertility.off", -6}, {"elephant.off", -4}};
   for(const auto& c : cases) {
     Mesh m = load(c.first);
     BOOST_REQUIRE(CGAL::is_closed(m));
@@ -216,7 +234,26 @@ BOOST_AUTO_TEST_CASE(closed_meshes_index_sum_is_euler_characteristic)
     BOOST_CHECK_LE(dipoles, r.sing.singular_vertices / 10);
     BOOST_CHECK_LE(r.sing.singular_vertices, std::size_t(0.02 * double(m.number_of_vertices())));
     std::cerr << c.first << ": adjacent +/- pairs " << dipoles << std::endl;
-    for(const auto& vc : r.sing.singularities_by_valence) BOOST_CHECK(vc.first == 3 || vc.first == 5);
+    // valences 3 and 5 almost only (the elephant's smoothest field has one valence-6 point on its coarse trunk tip)
+    std::size_t three_or_five = 0;
+    for(const auto& vc : r.sing.singularities_by_valence) {
+      BOOST_CHECK(vc.first >= 2 && vc.first <= 6);
+      if(vc.first == 3 || vc.first == 5) three_or_five += vc.second;
+    }
+    BOOST_CHECK_GE(double(three_or_five), 0.98 * double(r.sing.singular_vertices));
+
+    // The curvature guidance must not add many singularities to the smoothest field (weight 0, the fewest
+    // this energy gives) nor make close +/- pairs: per-face curvature noise did both before the targets
+    // were smoothed (bunny 56 vs 46, elephant 136 vs 110 with 17 pairs closer than two edge lengths).
+    auto smooth_field = m.add_property_map<face_descriptor, Vector_3>("f:smoothest", Vector_3(0, 0, 0)).first;
+    auto smooth_sing = m.add_property_map<vertex_descriptor, int>("v:smoothest", 0).first;
+    QR::compute_cross_field(m, fm, smooth_field, QR::parameters::curvature_alignment_weight(0.));
+    const auto smoothest = QR::compute_cross_field_singularities(m, fm, smooth_field, smooth_sing);
+    BOOST_CHECK_LE(double(r.sing.singular_vertices), 1.15 * double(smoothest.singular_vertices) + 4.);
+    const std::size_t close_pairs = close_opposite_pairs(m, sing, 2.);
+    BOOST_CHECK_LE(close_pairs, std::max<std::size_t>(3, r.sing.singular_vertices / 20));
+    std::cerr << c.first << ": " << r.sing.singular_vertices << " singularities (smoothest field "
+              << smoothest.singular_vertices << "), " << close_pairs << " +/- pairs closer than 2 edge lengths\n";
     BOOST_TEST_MESSAGE(c.first << ": " << r.sing.report().to_json(-1) << " " << r.field.report().to_json(-1));
     std::cerr << c.first << ": " << r.sing.report().to_json(-1) << " " << r.field.report().to_json(-1) << std::endl;
   }
@@ -289,6 +326,46 @@ BOOST_AUTO_TEST_CASE(boundary_mesh_and_determinism)
   BOOST_CHECK_GT(s1.curvature_faces, 0u);
 
   BOOST_CHECK_THROW(QR::compute_cross_field(m, fm, f3, QR::parameters::curvature_alignment_weight(-1.)), std::invalid_argument);
+  BOOST_CHECK_THROW(QR::compute_cross_field(m, fm, f3, QR::parameters::curvature_smoothing_steps(-1)), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(smoothed_curvature_guidance_follows_consistent_curvature)
+{
+  // The elephant's legs and trunk are near-cylinders: strong, consistent anisotropy. There the guided field
+  // must follow the principal directions much better than the smoothest field, nearly as well as with each
+  // face's own noisy target, and the smoothing removes the noise-made singularities.
+  Mesh m = load("elephant.off");
+  auto fm = features(m, 180.);
+  auto own = m.add_property_map<face_descriptor, Vector_3>("f:own", Vector_3(0, 0, 0)).first;
+  auto smoothed = m.add_property_map<face_descriptor, Vector_3>("f:smoothed", Vector_3(0, 0, 0)).first;
+  auto plain = m.add_property_map<face_descriptor, Vector_3>("f:plain", Vector_3(0, 0, 0)).first;
+  auto sing = m.add_property_map<vertex_descriptor, int>("v:sing", 0).first;
+  QR::compute_cross_field(m, fm, own, QR::parameters::curvature_smoothing_steps(0));
+  const auto st = QR::compute_cross_field(m, fm, smoothed);
+  QR::compute_cross_field(m, fm, plain, QR::parameters::curvature_alignment_weight(0.));
+  BOOST_CHECK_GT(st.curvature_faces, m.number_of_faces() / 2);
+  const std::size_t own_sing = QR::compute_cross_field_singularities(m, fm, own, sing).singular_vertices;
+  const std::size_t smoothed_sing = QR::compute_cross_field_singularities(m, fm, smoothed, sing).singular_vertices;
+  BOOST_CHECK_LT(smoothed_sing, own_sing);
+
+  // reference directions: the field of the guidance alone (a huge weight), kept where it is strongly anisotropic
+  auto guide = m.add_property_map<face_descriptor, Vector_3>("f:guide", Vector_3(0, 0, 0)).first;
+  QR::compute_cross_field(m, fm, guide, QR::parameters::combine(QR::parameters::curvature_alignment_weight(1e6), QR::parameters::curvature_smoothing_steps(0)));
+  double dev_own = 0., dev_smoothed = 0., dev_plain = 0.;
+  for(face_descriptor f : faces(m)) {
+    const Vector_3 n = unit_normal(f, m);
+    dev_own += cross_deviation(get(own, f), get(guide, f), n);
+    dev_smoothed += cross_deviation(get(smoothed, f), get(guide, f), n);
+    dev_plain += cross_deviation(get(plain, f), get(guide, f), n);
+  }
+  const double nf = double(m.number_of_faces()), deg = 180. / CGAL_PI;
+  std::cerr << "elephant: mean deviation from the curvature directions: smoothest " << deg * dev_plain / nf
+            << " deg, own targets " << deg * dev_own / nf << " deg, smoothed " << deg * dev_smoothed / nf
+            << " deg; singularities own " << own_sing << ", smoothed " << smoothed_sing << "\n";
+  BOOST_CHECK_LT(dev_smoothed, 0.8 * dev_plain);
+  // the per-face directions are also noise where the surface is nearly umbilic: following them less there
+  // is the point, so the smoothed field may deviate a little more from them on average
+  BOOST_CHECK_LT(dev_smoothed, 1.25 * dev_own);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -35,6 +35,8 @@
 
 /// weight of the soft alignment of the cross field to principal curvature directions (`double`, >= 0)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(curvature_alignment_weight_t, curvature_alignment_weight, curvature_alignment_weight)
+/// number of face-ring averaging steps applied to the curvature directions before they guide the field (`int`, >= 0)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(curvature_smoothing_steps_t, curvature_smoothing_steps, curvature_smoothing_steps)
 
 namespace CGAL {
 namespace Quad_remeshing {
@@ -169,10 +171,15 @@ double halfedge_field_rotation(typename boost::graph_traits<TriangleMesh>::halfe
   with \f$w_{fg} = |e|^2 / (A_f + A_g)\f$,
   where \f$u_f = e^{4i\theta_f}\f$ is the fourth power of the field in the face's local frame and \f$r_{fg}\f$
   the Levi-Civita transport across the shared edge, plus the soft term
-  \f$w\,a_f^2\,|u_f - c_f|^2\f$ that pulls a face towards its direction of largest principal curvature
-  \f$c_f\f$, with \f$a_f = (|k_1| - |k_2|)/(|k_1| + |k_2|)\f$ its curvature anisotropy (counted only where the curvature
-  is noticeable at the scale of the mesh edges). The sparse Hermitian system is solved with Eigen's
-  `SimplicialLDLT`, and the results are normalised. A component (connected through non-feature edges) without a
+  \f$w\,\alpha_f\,|u_f - c_f|^2\f$ that pulls a face towards a smoothed direction of largest principal curvature.
+  Each face first gets the target \f$a_f^2\,e^{4i\phi_f}\f$ from its own shape operator, with \f$\phi_f\f$ the angle of
+  its largest principal curvature direction and \f$a_f = (|k_1| - |k_2|)/(|k_1| + |k_2|)\f$ its curvature anisotropy
+  (counted only where the curvature is noticeable at the scale of the mesh edges and \f$a_f \geq 0.2\f$); these
+  targets are then averaged (area weighted, transported across the edges, not across features) over
+  `curvature_smoothing_steps` face rings. The average's argument gives \f$c_f\f$ and its magnitude
+  \f$\alpha_f \leq 1\f$ (faces without a target of their own get none): consistent directions keep their
+  pull, noisy ones cancel, which avoids close pairs of opposite singularities made by per-face curvature
+  noise. The sparse Hermitian system is solved with Eigen's `SimplicialLDLT`, and the results are normalised. A component (connected through non-feature edges) without a
   constrained face has no boundary condition (the energy alone is minimised by the null field); there the field is
   the smoothest unit field, the eigenvector of the smallest eigenvalue of the connection Laplacian (Knoeppel et al.
   2013), found by inverse power iteration (at most 30 steps, until no direction moves by more than 2.5e-5 rad) from a deterministic start, with the curvature pull added to each
@@ -198,6 +205,13 @@ double halfedge_field_rotation(typename boost::graph_traits<TriangleMesh>::halfe
       \cgalParamDescription{weight \f$w\f$ of the soft alignment to principal curvature directions; 0 gives the smoothest field}
       \cgalParamType{`double`}
       \cgalParamDefault{`0.1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{curvature_smoothing_steps}
+      \cgalParamDescription{number of one-ring averaging steps applied to the curvature targets (0: each face's own
+                             curvature direction; 8 spans about two quad edge lengths on a mesh pre-remeshed at half
+                             the quad edge length)}
+      \cgalParamType{`int`, >= 0}
+      \cgalParamDefault{`8`}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map}
       \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
@@ -246,6 +260,8 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
   const double weight = choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight), 0.1);
   if(!(weight >= 0.) || !std::isfinite(weight))
     throw std::invalid_argument("compute_cross_field: curvature_alignment_weight must be finite and >= 0");
+  const int smoothing_steps = choose_parameter(get_parameter(np, internal_np::curvature_smoothing_steps), 8);
+  if(smoothing_steps < 0) throw std::invalid_argument("compute_cross_field: curvature_smoothing_steps must be >= 0");
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, tmesh));
   auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
@@ -317,7 +333,6 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
       if(a < 0.2) continue;
       soft_w[i] = weight * a * a;
       soft_c[i] = std::polar(1., 4. * c.angle);
-      ++stats.curvature_faces;
     }
   }
 
@@ -326,6 +341,52 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
     const Vec3d e = edge_vector(h, tmesh, vpm);
     return std::polar(1., 4. * (frames[fi].angle(e) - frames[gi].angle(e)));
   };
+
+  // A face's curvature direction is measured on its own three vertex normals: noisy at the scale of the
+  // edges, and the noise creates close pairs of opposite singularities. Average the anisotropy-weighted
+  // targets a_f^2 c_f (transported, area weighted) over a few face rings: where the directions agree the pull
+  // stays, where they disagree the targets cancel and the pull fades. Faces without a target of their own get none.
+  if(weight > 0. && smoothing_steps > 0) {
+    std::vector<Cplx> z(nf), next(nf);
+    std::vector<double> area(nf), next_area(nf);
+    for(std::size_t i = 0; i < nf; ++i) {
+      area[i] = fixed[i] ? 0. : frames[i].area;
+      z[i] = soft_w[i] / weight * soft_c[i] * area[i];
+    }
+    // transports and neighbours once: the steps reuse them
+    std::vector<std::array<std::pair<std::size_t, Cplx>, 3>> ring(nf);
+    std::vector<int> ring_size(nf, 0);
+    for(std::size_t i = 0; i < nf; ++i) {
+      if(fixed[i]) continue;
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(face_of[i], tmesh), tmesh)) {
+        if(is_feature(h)) continue;
+        const std::size_t j = get(fim, face(opposite(h, tmesh), tmesh));
+        if(!fixed[j]) ring[i][std::size_t(ring_size[i]++)] = {j, connection(h, i, j)};
+      }
+    }
+    for(int step = 0; step < smoothing_steps; ++step) {
+      for(std::size_t i = 0; i < nf; ++i) {
+        next[i] = z[i];
+        next_area[i] = area[i];
+        for(int k = 0; k < ring_size[i]; ++k) {
+          next[i] += ring[i][std::size_t(k)].second * z[ring[i][std::size_t(k)].first];
+          next_area[i] += area[ring[i][std::size_t(k)].first];
+        }
+      }
+      z.swap(next);
+      area.swap(next_area);
+    }
+    for(std::size_t i = 0; i < nf; ++i) {
+      // only faces with a target of their own keep one: the averaging must not spread the pull onto flat
+      // or isotropic faces (on CAD models those belong to the feature lines)
+      if(!(soft_w[i] > 0.)) continue;
+      const double a = area[i] > 0. ? std::abs(z[i]) / area[i] : 0.;
+      soft_w[i] = a > 1e-12 ? weight * a : 0.;
+      soft_c[i] = a > 1e-12 ? z[i] / std::abs(z[i]) : Cplx(0., 0.);
+    }
+  }
+  for(std::size_t i = 0; i < nf; ++i)
+    if(soft_w[i] > 0.) ++stats.curvature_faces;
 
   // Components of free faces (through non-feature edges); a component touching no constrained face
   // ("unanchored") has no boundary condition and is solved as the smoothest field instead.
