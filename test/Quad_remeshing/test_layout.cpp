@@ -2,6 +2,7 @@
 #include "test_support.h"
 
 #include <CGAL/Quad_remeshing/Patch_layout.h>
+#include <CGAL/Quad_remeshing/cross_field.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 
@@ -16,7 +17,9 @@
 #include <array>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 namespace {
 
@@ -111,6 +114,38 @@ Mesh::Property_map<F, Vector_3> stand_in_field(Mesh& m)
     for(const Vector_3& a : axes) if(std::abs(a * nn) < best) { best = std::abs(a * nn); field[f] = a; }
   }
   return field;
+}
+
+// the vertex at `p` (within 1e-6): the hand checks name vertices by their coordinates in the OFF file
+V vertex_at(const Mesh& m, const Point_3& p)
+{
+  for(V v : m.vertices())
+    if(CGAL::squared_distance(m.point(v), p) < 1e-12) return v;
+  BOOST_FAIL("no vertex at " << p);
+  return V();
+}
+
+// one passage of a patch boundary loop through a vertex: where it comes from, where it goes, the turn
+struct Passage
+{
+  std::size_t patch;
+  V from, to;
+  Layout::Turn turn;
+};
+
+std::vector<Passage> passages(const Layout& layout, V v)
+{
+  const Mesh& m = layout.mesh();
+  std::vector<Passage> r;
+  const auto& patches = layout.patches();
+  for(std::size_t p = 0; p < patches.size(); ++p)
+    for(std::size_t l = 0; l < patches[p].loops.size(); ++l) {
+      const auto& loop = patches[p].loops[l];
+      for(std::size_t i = 0; i < loop.size(); ++i)
+        if(m.target(loop[i]) == v)
+          r.push_back(Passage{p, m.source(loop[i]), m.target(loop[(i + 1) % loop.size()]), patches[p].turns[l][i]});
+    }
+  return r;
 }
 
 } // namespace
@@ -333,6 +368,165 @@ BOOST_AUTO_TEST_CASE(fandisk_features_and_tracing)
   BOOST_TEST(ply.str().find("element face " + std::to_string(m.number_of_faces())) != std::string::npos);
   const std::string lines = pl.str();
   BOOST_TEST(std::count(lines.begin(), lines.end(), '\n') == long(added));
+}
+
+// Issue #5: on fandisk, the patches cut by the feature paths alone (nothing traced yet) must turn at a few
+// chosen vertices the way the geometry says. Feature edges: dihedral angle above 60 degrees (sharp_edges);
+// the real cross field (compute_cross_field, aligned to those edges) and its singularities.
+//
+// How a turn is found (Patch_layout::classify): the field carried across the patch's fan from the incoming
+// to the outgoing boundary edge gives the turn modulo 4 quarter turns; among those the one nearest to
+// (pi - fan) / (pi / 2) is taken, the fan angle being scaled by 2 pi / (total angle at the vertex) when the
+// vertex is a cone. The angles below were measured in fandisk.off (sum of the triangle angles at the vertex
+// inside each patch).
+BOOST_AUTO_TEST_CASE(fandisk_feature_patches_match_hand_check)
+{
+  Mesh m;
+  BOOST_REQUIRE(CGAL::IO::read_OFF(qr_test::data_file("fandisk.off"), m));
+  auto feature = sharp_edges(m);
+  auto field = m.add_property_map<F, Vector_3>("f:cross_field", Vector_3(0, 0, 0)).first;
+  auto singularity = m.add_property_map<V, int>("v:singularity", 0).first;
+  CGAL::Quad_remeshing::compute_cross_field(m, feature, field);
+  CGAL::Quad_remeshing::compute_cross_field_singularities(m, feature, field, singularity);
+  Layout layout(m, field, singularity);
+  BOOST_TEST(layout.add_feature_paths(feature) > 0u);
+
+  typedef std::tuple<std::size_t, std::size_t, Layout::Turn> Seen; // (from, to, turn) of a passage
+  auto seen = [&](V v) {
+    std::set<Seen> s;
+    for(const Passage& p : passages(layout, v)) s.insert(Seen{std::size_t(p.from), std::size_t(p.to), p.turn});
+    return s;
+  };
+  // what the layout says, for the failure messages: patch, from -> to, turn (0 straight, 1 right, 2 left, 3 U)
+  auto describe = [&](V v) {
+    std::ostringstream o;
+    for(const Passage& p : passages(layout, v))
+      o << " [patch " << p.patch << ": " << p.from << " -> " << p.to << ", turn " << int(p.turn) << "]";
+    return o.str();
+  };
+  auto distinct_patches = [&](V v) {
+    std::set<std::size_t> s;
+    for(const Passage& p : passages(layout, v)) s.insert(p.patch);
+    return s.size();
+  };
+  const auto S = Layout::STRAIGHT, R = Layout::RIGHT_TURN, L = Layout::LEFT_TURN, U = Layout::U_TURN;
+
+  // 1. Middle of a straight feature line: (-0.92, 0.962, -0.511) on the convex 90 degree edge between the
+  // flat side x = -0.92 and the bottom z = -0.511, between feature neighbours a (towards the corner of check
+  // 2) and b. Both sides are planar, each patch sees 180 degrees (total 360): measured 0; the field follows
+  // the edge on both faces: turn 0 mod 4. Both patches: STRAIGHT.
+  {
+    const V v = vertex_at(m, Point_3(-0.9205710888, 0.9624140263, -0.5110649467));
+    const V a = vertex_at(m, Point_3(-0.9205710888, 1.0, -0.5110649467));
+    const V b = vertex_at(m, Point_3(-0.9205710888, 0.9248269796, -0.5110649467));
+    BOOST_TEST((seen(v) == std::set<Seen>{{a, b, S}, {b, a, S}}), describe(v));
+    BOOST_TEST(distinct_patches(v) == 2u);
+  }
+  // 2. Convex corner where three feature lines meet: (-0.92, 1, -0.511), a box corner of the flat side,
+  // the bottom and the back y = 1; its three edges (to x, y and z neighbours) are convex, about 90 degrees.
+  // Each patch sees 90 degrees of a 270 degree cone: scaled to 120, measured 2/3; the field turns by one
+  // quarter: RIGHT_TURN in all three patches.
+  {
+    const V v = vertex_at(m, Point_3(-0.9205710888, 1.0, -0.5110649467));
+    const V x = vertex_at(m, Point_3(-0.8830050826, 0.999473989, -0.5110649467));
+    const V y = vertex_at(m, Point_3(-0.9205710888, 0.9624140263, -0.5110649467));
+    const V z = vertex_at(m, Point_3(-0.9205710888, 0.9999009967, -0.4745078981));
+    BOOST_TEST((seen(v) == std::set<Seen>{{x, z, R}, {z, y, R}, {y, x, R}}), describe(v));
+    BOOST_TEST(distinct_patches(v) == 3u);
+  }
+  // 3. Concave corner: (-0.92, 0.159, -0.449), the inner corner of a notch of the flat side x = -0.92:
+  // two convex edges on the flat side (to p and q) and a concave 90 degree edge into the body (to c).
+  // On the flat side the patch sees 270 degrees (a reflex corner), of a 449 degree saddle: scaled to 216.5,
+  // measured -0.41, the field turns by -1 quarter mod 4: LEFT_TURN (so that patch is not convex). On either
+  // side of the concave edge the surface sees 90 degrees (scaled to 72, measured 1.2): RIGHT_TURN. Those two
+  // sides are one patch: the valley line leaving towards c fades out (dihedral angle below 60 degrees) and
+  // ends at (-0.230, 0.172, -0.155), 29 edges further, where that patch turns around it: a U_TURN.
+  {
+    const V v = vertex_at(m, Point_3(-0.9205710888, 0.1588989943, -0.4490569234));
+    const V p = vertex_at(m, Point_3(-0.9205710888, 0.1969850063, -0.4423419237));
+    const V q = vertex_at(m, Point_3(-0.9205710888, 0.1518210024, -0.4089189172));
+    const V c = vertex_at(m, Point_3(-0.8845120668, 0.1587850004, -0.4483999014));
+    BOOST_TEST((seen(v) == std::set<Seen>{{q, p, L}, {p, c, R}, {c, q, R}}), describe(v));
+    BOOST_TEST(distinct_patches(v) == 2u);
+    std::size_t valley_patch = 0;
+    for(const Passage& s : passages(layout, v)) {
+      if(s.turn == L) BOOST_TEST(layout.validity(s.patch) == Layout::NOT_CONVEX);
+      else valley_patch = s.patch;
+    }
+    const V end = vertex_at(m, Point_3(-0.229738012, 0.1721359938, -0.1552259922));
+    const auto at_end = passages(layout, end);
+    BOOST_REQUIRE(at_end.size() == 1u);
+    BOOST_TEST(at_end[0].turn == U);
+    BOOST_TEST(at_end[0].from == at_end[0].to);
+    BOOST_TEST(at_end[0].patch == valley_patch);
+  }
+  // 4. A feature line that bends in the bottom plane z = -0.511: (0.0022, -0.868, -0.511), between
+  // neighbours a and b, with 157.3 degrees inside the bottom patch and 180 in the other (total 337.4):
+  // scaled 167.9 / 192.1, measured +-0.13; the field, aligned to each edge, turns by less than 45 degrees
+  // across the fan: turn 0 mod 4. A 23 degree bend is not a corner: STRAIGHT on both sides.
+  {
+    const V v = vertex_at(m, Point_3(0.0022240153, -0.8676739931, -0.5110650063));
+    const V a = vertex_at(m, Point_3(-0.0053199446, -0.8305029869, -0.5110650063));
+    const V b = vertex_at(m, Point_3(0.0230231546, -0.89833498, -0.5110650063));
+    BOOST_TEST((seen(v) == std::set<Seen>{{a, b, S}, {b, a, S}}), describe(v));
+  }
+  // 5. The end of a feature line: (0.466, 0.184, -0.163), the only feature neighbour e (the ridge's
+  // dihedral angle drops below 60 degrees past this vertex). The one patch around it comes in from e and
+  // goes back to e around the whole fan (360 degrees): measured -2; the field turns by 2 quarters: U_TURN,
+  // a dangling path end, so that patch is not convex.
+  {
+    const V v = vertex_at(m, Point_3(0.4664509892, 0.1840379983, -0.1631870419));
+    const V e = vertex_at(m, Point_3(0.435608983, 0.2021259964, -0.1737110466));
+    BOOST_TEST((seen(v) == std::set<Seen>{{e, e, U}}), describe(v));
+    for(const Passage& s : passages(layout, v)) BOOST_TEST(layout.validity(s.patch) != Layout::SATISFIED);
+  }
+  // 6. A spike: at (-0.144, 0.092, -0.069) a convex ridge (to r, 75.6 degrees) turns back into a concave
+  // valley (to w, 89.8 degrees); the edges are 18.5 degrees apart in one patch (measured 1.79) and 341.5
+  // apart in the other (measured -1.79); in both the field turns by 2 quarters: U_TURN on both sides.
+  {
+    const V v = vertex_at(m, Point_3(-0.1437640041, 0.091902703, -0.0691067874));
+    const V r = vertex_at(m, Point_3(-0.1654330194, 0.1088540033, -0.0941183865));
+    const V w = vertex_at(m, Point_3(-0.1661170125, 0.0968298018, -0.0970444828));
+    BOOST_TEST((seen(v) == std::set<Seen>{{r, w, U}, {w, r, U}}), describe(v));
+  }
+  // 7. A whole patch: the end face x = +0.92 is a planar quadrilateral bounded by four feature lines meeting
+  // at four convex box corners like the one of check 2 (RIGHT_TURN each); the rest of its boundary is
+  // straight. A 4-sided convex disk: valid.
+  {
+    const V corners[4] = {vertex_at(m, Point_3(0.9205709696, 0.0790281966, -0.5110620856)),
+                          vertex_at(m, Point_3(0.9205709696, -0.2069880068, -0.5110650659)),
+                          vertex_at(m, Point_3(0.9205710888, -0.2920680046, 0.4613988996)),
+                          vertex_at(m, Point_3(0.9205710888, -0.0103957001, 0.5110649467))};
+    std::optional<std::size_t> end_face;
+    for(const Passage& s : passages(layout, corners[0]))
+      if(m.point(s.from).x() > 0.92 && m.point(s.to).x() > 0.92) end_face = s.patch;
+    BOOST_REQUIRE(end_face);
+    const Layout::Patch& P = layout.patches()[*end_face];
+    BOOST_TEST(P.corners.size() == 4u);
+    for(const V c : corners) BOOST_TEST(std::count(P.corners.begin(), P.corners.end(), c) == 1);
+    for(const Layout::Turn t : P.turns.at(0)) BOOST_TEST((t == S || t == R));
+    BOOST_TEST(layout.validity(*end_face) == Layout::SATISFIED);
+  }
+
+  // Determinism: the same candidates traced on a second layout built the same way give the same paths.
+  Layout again(m, field, singularity);
+  again.add_feature_paths(feature);
+  std::vector<Layout::Node> ends;
+  for(V v : m.vertices())
+    if(layout.is_on_cut(v)) for(int k = 0; k < 4; ++k) ends.push_back(Layout::Node{v, k});
+  std::size_t compared = 0;
+  for(std::size_t i = 0; i < 200; ++i) {
+    const Layout::Node start{V(std::size_t((i * 7919) % m.number_of_vertices())), int(i % 4)};
+    auto p1 = layout.trace(start, ends);
+    auto p2 = again.trace(start, ends);
+    BOOST_TEST(bool(p1) == bool(p2));
+    if(p1 && p2) {
+      ++compared;
+      BOOST_TEST((p1->vertices == p2->vertices));
+      BOOST_TEST((p1->directions == p2->directions));
+    }
+  }
+  BOOST_TEST(compared > 100u);
 }
 
 BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
