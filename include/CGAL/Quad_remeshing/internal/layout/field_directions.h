@@ -7,6 +7,7 @@
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_LAYOUT_FIELD_DIRECTIONS_H
 #define CGAL_QUAD_REMESHING_INTERNAL_LAYOUT_FIELD_DIRECTIONS_H
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>

@@ -7,6 +7,7 @@
 #define CGAL_QUAD_REMESHING_INTERNAL_REMESHING_REMESHING_HELPERS_H
 
 #include <CGAL/AABB_traits.h>
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/graph/Euler_operations.h>
