@@ -316,69 +316,73 @@ inline std::vector<std::vector<int>> solve_padding(const std::vector<int>& r)
 // fewest loops: both add two boundary edges each), then closest to the middle, then balanced
 // padding, then lexicographic (deterministic).
 inline std::vector<Pattern_choice> pattern_choices(const Quad_pattern& pat, const std::vector<int>& e,
-                                                   int rotation, bool reflected)
+                                                   int rotation, bool reflected,
+                                                   std::size_t max_choices = std::size_t(-1))
 {
   const std::size_t n = e.size();
-  std::vector<int> r0(n);
+  std::vector<int> r(n);
   for(std::size_t j = 0; j < n; ++j)
   {
-    r0[j] = e[input_side(j, n, rotation, reflected)] - pat.base_counts[j];
-    if(r0[j] < 0) return {};
+    r[j] = e[input_side(j, n, rotation, reflected)] - pat.base_counts[j];
+    if(r[j] < 0) return {};
   }
   const std::size_t L = pat.loop_sites.size();
-  std::vector<Pattern_choice> found;
   std::vector<int> x(L, 0);
-  // depth-first over the loop counts, the residual kept non-negative
-  std::vector<int> r = r0;
-  auto recurse = [&](auto&& self, std::size_t k) -> void {
-    if(k == L)
-    {
-      for(auto& p : solve_padding(r))
-        found.push_back(Pattern_choice{&pat, rotation, reflected, x, std::move(p)});
-      return;
-    }
-    const auto& sd = pat.loop_sides[k];
-    for(x[k] = 0;; ++x[k])
-    {
-      if(r[std::size_t(sd[0])] < 0 || r[std::size_t(sd[1])] < 0) break;
-      self(self, k + 1);
-      --r[std::size_t(sd[0])];
-      --r[std::size_t(sd[1])];
-    }
-    r[std::size_t(sd[0])] += x[k];
-    r[std::size_t(sd[1])] += x[k];
-    x[k] = 0;
+  // depth-first over the loop counts, the residual r kept non-negative; visit(x, p) per solution
+  auto enumerate = [&](const auto& visit) {
+    auto recurse = [&](auto&& self, std::size_t k) -> void {
+      if(k == L)
+      {
+        for(auto& p : solve_padding(r)) visit(x, p);
+        return;
+      }
+      const auto& sd = pat.loop_sides[k];
+      for(x[k] = 0;; ++x[k])
+      {
+        if(r[std::size_t(sd[0])] < 0 || r[std::size_t(sd[1])] < 0) break;
+        self(self, k + 1);
+        --r[std::size_t(sd[0])];
+        --r[std::size_t(sd[1])];
+      }
+      r[std::size_t(sd[0])] += x[k];
+      r[std::size_t(sd[1])] += x[k];
+      x[k] = 0;
+    };
+    recurse(recurse, 0);
   };
-  recurse(recurse, 0);
-  if(found.empty()) return found;
+  // first the range of each loop count, then the best max_choices solutions by key (two passes
+  // instead of storing every solution: long sides and four loop sites give tens of thousands)
   std::vector<int> lo(L, 1 << 30), hi(L, -1);
-  for(const auto& c : found)
-    for(std::size_t k = 0; k < L; ++k) { lo[k] = std::min(lo[k], c.loops[k]); hi[k] = std::max(hi[k], c.loops[k]); }
-  // keys computed once: the candidate sets reach thousands for long sides and four loop sites
+  bool any = false;
+  enumerate([&](const std::vector<int>& xs, const std::vector<int>&) {
+    any = true;
+    for(std::size_t k = 0; k < L; ++k) { lo[k] = std::min(lo[k], xs[k]); hi[k] = std::max(hi[k], xs[k]); }
+  });
+  if(!any) return {};
   using Key = std::tuple<int, int, int, int, std::size_t>;
-  std::vector<Key> keys(found.size());
-  for(std::size_t f = 0; f < found.size(); ++f)
-  {
-    const Pattern_choice& c = found[f];
+  std::vector<std::pair<Key, Pattern_choice>> best;
+  std::size_t counter = 0; // enumeration order: lexicographic in the loop counts
+  enumerate([&](const std::vector<int>& xs, const std::vector<int>& p) {
     int outside = 0, deviation = 0, loops = 0, imbalance = 0;
     for(std::size_t k = 0; k < L; ++k)
     {
-      const int d = std::abs(c.loops[k] - (lo[k] + hi[k]) / 2);
+      const int d = std::abs(xs[k] - (lo[k] + hi[k]) / 2);
       outside += std::max(0, d - 1);
       deviation += d;
-      loops += c.loops[k];
+      loops += xs[k];
     }
-    for(std::size_t i = 0; i < n; ++i) imbalance += std::abs(c.padding[i] - c.padding[(i + 2) % n]);
-    // f: the enumeration order, lexicographic in the loop counts
-    keys[f] = Key(outside, loops, deviation, imbalance, f);
-  }
-  std::vector<std::size_t> order(found.size());
-  for(std::size_t f = 0; f < order.size(); ++f) order[f] = f;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
-  std::vector<Pattern_choice> sorted;
-  sorted.reserve(order.size());
-  for(std::size_t f : order) sorted.push_back(std::move(found[f]));
-  return sorted;
+    for(std::size_t i = 0; i < n; ++i) imbalance += std::abs(p[i] - p[(i + 2) % n]);
+    const Key key(outside, loops, deviation, imbalance, counter++);
+    if(best.size() == max_choices && !(key < best.back().first)) return;
+    auto at = std::upper_bound(best.begin(), best.end(), key,
+                               [](const Key& k, const auto& b) { return k < b.first; });
+    best.insert(at, {key, Pattern_choice{&pat, rotation, reflected, xs, p}});
+    if(best.size() > max_choices) best.pop_back();
+  });
+  std::vector<Pattern_choice> out;
+  out.reserve(best.size());
+  for(auto& b : best) out.push_back(std::move(b.second));
+  return out;
 }
 
 // Builds a pattern instance: base mesh, loops, padding (sides n-1 down to 0, as PatchGen), then
@@ -573,7 +577,7 @@ inline std::optional<Pattern_result> best_pattern(const std::vector<int>& e)
       std::vector<std::vector<Pattern_choice>> choices;
       for(int reflected = 0; reflected < 2; ++reflected)
         for(int rotation = 0; rotation < int(n); ++rotation)
-          choices.push_back(pattern_choices(pat, e, rotation, reflected != 0));
+          choices.push_back(pattern_choices(pat, e, rotation, reflected != 0, tries_per_permutation));
       // round 0: the first choice of each permutation without a flat corner; round 1, only if none
       // of those embeds (the harmonic map can still fold a quad): all the other tried choices
       for(int round = 0; round < 2; ++round)
