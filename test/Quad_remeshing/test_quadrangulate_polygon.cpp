@@ -334,9 +334,9 @@ BOOST_AUTO_TEST_CASE(known_pattern_results)
 
 BOOST_AUTO_TEST_CASE(selection_prefers_fewer_irregular_vertices)
 {
-  // For every general input with sides up to 5: no earlier pattern of the default order has an
-  // instance without a flat corner, and no permutation of the chosen pattern has a valid first
-  // choice with fewer irregular vertices.
+  // For every general input with sides up to 5 (3 for 5 and 6 sides): no earlier pattern of the
+  // default order has an instance without a flat corner, and no permutation of the chosen pattern
+  // has a valid first choice with fewer irregular vertices.
   std::size_t checked = 0, failures = 0;
   for(std::size_t n = 3; n <= 6; ++n)
     for_each_even_vector(n, n <= 4 ? 5 : 3, [&](const std::vector<int>& e) {
