@@ -9,6 +9,7 @@
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/quadrangulate_polygon/constructions.h>
+#include <CGAL/Quad_remeshing/internal/quadrangulate_polygon/patterns.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -40,8 +41,11 @@ struct Polygon_quadrangulation
 {
   /// how the polygon was filled
   enum Strategy {
-    SIMPLE,  ///< Tarini's single-singularity patch (regular grid for 4 sides)
-    GENERAL  ///< the general construction (boundary ring around a regular grid)
+    SIMPLE,       ///< Tarini's single-singularity patch (regular grid for 4 sides)
+    GENERAL,      ///< one of Takayama et al.'s topological patterns, with loops and padding
+    RING_AND_GRID ///< last resort when no pattern embeds without a flat quad corner: a ring of
+                  ///< quads along the boundary around a regular grid (only tiny inputs, see
+                  ///< `quadrangulate_polygon()`)
   };
 
   /// the number of edges of each side, as given
@@ -65,6 +69,21 @@ struct Polygon_quadrangulation
   Strategy strategy = GENERAL;
   /// for `SIMPLE` with 3, 5 or 6 sides, Tarini's separatrix lengths `s_i` (else empty)
   std::vector<int> separatrix_lengths;
+  /// for `GENERAL`, the pattern `(n, K)` used, named `"n_K"` as in Takayama et al. (else empty)
+  std::string pattern;
+  /// for `GENERAL`, the number of edge loops inserted at each of the pattern's loop sites
+  std::vector<int> pattern_loops;
+  /// for `GENERAL`, the padding (quad strips appended) along each side of the pattern, in pattern
+  /// side order
+  std::vector<int> pattern_padding;
+  /// for `GENERAL`, the side map: pattern side `j` is input side `j + pattern_rotation` (mod n), or
+  /// `pattern_rotation - j` if `pattern_reflected` (the pattern then mirrored)
+  int pattern_rotation = 0;
+  /// see `pattern_rotation`
+  bool pattern_reflected = false;
+  /// for `GENERAL`, the number of pattern quads split into five (an inner quad and a ring of four)
+  /// because a lone pattern vertex on an unpadded side would make them flat in the embedding
+  int pattern_split_quads = 0;
   /// irregular vertices counted by valence (number of incident edges): interior vertices of
   /// valence != 4, boundary non-corner vertices of valence != 3, corners of valence != 2
   std::map<int, int> irregular_vertices_by_valence;
@@ -90,7 +109,12 @@ struct Polygon_quadrangulation
   {
     Report r = Report::object();
     r["sides"] = number_of_sides();
-    r["strategy"] = strategy == SIMPLE ? "simple" : "general";
+    r["strategy"] = strategy == SIMPLE ? "simple" : strategy == GENERAL ? "general" : "ring_and_grid";
+    if(strategy == GENERAL)
+    {
+      r["pattern"] = pattern;
+      r["pattern_split_quads"] = pattern_split_quads;
+    }
     r["vertices"] = positions.size();
     r["quads"] = quads.size();
     r["irregular_vertices"] = number_of_irregular_vertices();
@@ -183,12 +207,28 @@ inline bool admits_simple_quadrangulation(const std::vector<int>& e)
 
   Strategy: the simple one (Tarini 2021) whenever `admits_simple_quadrangulation()` holds: the
   regular grid for 4 sides, otherwise one interior vertex of valence n whose n separatrices cut the
-  patch into n regular grids. Otherwise the general construction, complete for every valid input: a
-  ring of quads along the whole boundary (each boundary vertex joined to one ring vertex) enclosing a
-  regular `a x b` grid with `a + b = N/2` (N the boundary length, `a = floor(N/4)`), its corners
-  joined to ring vertices `0, a, a+b, 2a+b`. It creates no more than n + 4 irregular vertices
-  (the corners, of valence 3, and the four grid corners, of valence 3). Takayama's minimal-irregularity
-  patterns are not implemented.
+  patch into n regular grids.
+
+  Otherwise the general one, the pattern-based quadrangulation of Takayama, Panozzo and
+  Sorkine-Hornung (SGP 2014), with the patterns of their PatchGen code: for n sides, patterns
+  `n_0, n_1, ...` (2_0-2_1, 3_0-3_2, 4_0-4_4, 5_0-5_3, 6_0-6_3), each a small quad mesh whose
+  side counts grow with edge loops inserted in fixed quad strips (`pattern_loops`) and with padding
+  strips appended along its sides (`pattern_padding`), placed on the polygon in any of the 2n
+  rotations and mirror images. Parameters are found by enumerating the loop counts (bounded by the
+  side counts), the paddings following from a linear system; no ILP solver is needed. Selection, as
+  PatchGen's default: the first pattern, in order of increasing irregularity, that has an instance;
+  for each side permutation the parameters with the loop counts centred in their feasible range
+  (within one of the middle), then the maximal padding, then balanced padding; then, where PatchGen
+  takes the first feasible permutation, the permutation with the fewest irregular vertices (ties:
+  the first, rotations before mirror images). Instances are only accepted if the embedding below has
+  every quad corner strictly convex; in particular a pattern vertex alone in one quad on an unpadded
+  side (which PatchGen accepts, its quad being flat on our straight sides) is refused. Every
+  input with 2 to 6 sides of at most 8 edges (4 sides or fewer) or 6 edges (5 and 6 sides) is served
+  this way; for a few small inputs, such as (4,1,1) or (4,1,1,1,1), only after the flat quads of a
+  pattern are split in five (an inner quad and a ring; `pattern_split_quads`). Should no pattern
+  instance embed (seen only for extreme inputs such as (80,1,1,1,1,2)), the last resort
+  `Polygon_quadrangulation::RING_AND_GRID` is a ring of quads along the whole boundary around a
+  regular grid, with n + 4 irregular vertices of valence 3.
 
   Positions: boundary on the regular n-gon, interior by a uniform-weight harmonic (Tutte) map,
   solved with Eigen's sparse Cholesky factorization. Deterministic.
@@ -203,13 +243,14 @@ inline bool admits_simple_quadrangulation(const std::vector<int>& e)
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{verbose}
-      \cgalParamDescription{print the strategy and the counts to `std::cerr`, prefixed by `[quadrangulate-polygon]`}
+      \cgalParamDescription{print the strategy (and pattern) and the counts to `std::cerr`, prefixed by `[quadrangulate-polygon]`}
       \cgalParamType{Boolean}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  @return the quadrangulation with its embedding, boundary indexing and irregular-vertex counts
+  @return the quadrangulation with its embedding, boundary indexing, irregular-vertex counts and,
+          for the general strategy, the pattern and its parameters
 */
 template <typename NamedParameters = parameters::Default_named_parameters>
 Polygon_quadrangulation quadrangulate_polygon(const std::vector<int>& side_edge_counts,
@@ -241,14 +282,29 @@ Polygon_quadrangulation quadrangulate_polygon(const std::vector<int>& side_edge_
       out.separatrix_lengths = *simple_quadrangulation_separatrices(e);
       c = internal::build_single_singularity(e, out.separatrix_lengths);
     }
+    out.positions = internal::harmonic_positions(c, internal::polygon_boundary_positions(e));
+  }
+  else if(auto general = internal::best_pattern(e))
+  {
+    out.strategy = Polygon_quadrangulation::GENERAL;
+    const internal::Pattern_choice& pc = general->choice;
+    out.pattern = std::to_string(pc.pattern->sides) + "_" + std::to_string(pc.pattern->id);
+    out.pattern_loops = pc.loops;
+    out.pattern_padding = pc.padding;
+    out.pattern_rotation = pc.rotation;
+    out.pattern_reflected = pc.reflected;
+    out.pattern_split_quads = general->split_quads;
+    c = std::move(general->connectivity);
+    out.positions = std::move(general->positions);
   }
   else
   {
-    out.strategy = Polygon_quadrangulation::GENERAL;
+    out.strategy = Polygon_quadrangulation::RING_AND_GRID;
     c = internal::build_ring_and_grid(N);
+    out.positions = internal::harmonic_positions(c, internal::polygon_boundary_positions(e));
   }
 
-  out.positions = internal::harmonic_positions(c, internal::polygon_boundary_positions(e));
+  out.irregular_vertices_by_valence = internal::irregular_by_valence(c, e);
   out.quads = std::move(c.quads);
   out.boundary.resize(N);
   out.side_of_boundary_vertex.resize(N);
@@ -265,27 +321,10 @@ Polygon_quadrangulation quadrangulate_polygon(const std::vector<int>& side_edge_
     }
   }
 
-  // valence = number of distinct neighbours
-  std::vector<std::vector<std::size_t>> nb(out.positions.size());
-  for(const auto& q : out.quads)
-    for(int k = 0; k < 4; ++k)
-    {
-      nb[q[k]].push_back(q[(k + 1) % 4]);
-      nb[q[(k + 1) % 4]].push_back(q[k]);
-    }
-  for(std::size_t v = 0; v < nb.size(); ++v)
-  {
-    std::sort(nb[v].begin(), nb[v].end());
-    const int valence = int(std::unique(nb[v].begin(), nb[v].end()) - nb[v].begin());
-    int regular = 4;
-    if(v < N) regular = (out.index_along_side[v] == 0) ? 2 : 3;
-    if(valence != regular) ++out.irregular_vertices_by_valence[valence];
-  }
-
   out.seconds = timer.time();
   if(verbose)
     std::cerr << "[quadrangulate-polygon] " << n << " sides, " << N << " boundary edges: "
-              << (out.strategy == Polygon_quadrangulation::SIMPLE ? "simple" : "general") << ", "
+              << out.report()["strategy"].string() << (out.pattern.empty() ? "" : " " + out.pattern) << ", "
               << out.quads.size() << " quads, " << out.number_of_irregular_vertices()
               << " irregular vertices\n";
   return out;
