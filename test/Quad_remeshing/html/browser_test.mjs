@@ -131,19 +131,16 @@ if (!(layers > 0) || !(drawn > 0)) fail(`nothing drawn (layers ${layers}, primit
 // 2. every layer: what it holds and the pixels it covers alone
 const unescape = (t) => t.replace(/&quot;/g, '"').replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
 const attribute = (tag, name) => { const m = tag.match(new RegExp(' ' + name + '="([^"]*)"')); return m ? unescape(m[1]) : null; };
-const entries = new Map();
-for (const tag of dom.match(/<div class="layer"[^>]*>/g) || []) {
-  const e = { faces: 0, segments: 0, points: 0, pixels: -1 };
+const entries = new Map(), tags = dom.match(/<div class="layer"[^>]*>/g) || [], summary = [];
+if (tags.length !== layers) fail(`${tags.length} layers listed, ${layers} in the scene`);
+for (const tag of tags) {
+  const name = attribute(tag, 'data-layer-name'), e = { faces: 0, segments: 0, points: 0, pixels: -1 };
   for (const k of Object.keys(e)) e[k] = Number(attribute(tag, 'data-' + k) ?? -1);
-  entries.set(attribute(tag, 'data-layer-name'), e);
-}
-if (entries.size !== layers) fail(`${entries.size} layers listed, ${layers} in the scene`);
-const summary = [];
-for (const [name, e] of entries) {
   const elements = e.faces + e.segments + e.points;
   if (!(e.pixels >= 0)) fail(`layer '${name}': no pixel count`);
   if (elements > 0 && e.pixels === 0) fail(`layer '${name}' holds ${elements} elements but covers no pixel`);
   summary.push(`${name}: ${e.faces} faces, ${e.segments} segments, ${e.points} points, ${e.pixels} px`);
+  entries.set(name, e);
 }
 for (const name of expected_layers) {
   const e = entries.get(name);
