@@ -8,12 +8,16 @@
 //     --shard I/N         process only the meshes whose index modulo N is I (for job arrays)
 //     --resume            skip meshes whose report already exists in DIR
 //     --manifest FILE     one mesh path per line ('#' starts a comment)
+//     --html              also write each mesh's HTML report (quad_remesh --html DIR/<name>.html)
 //     -- ARGS...          passed on to quad_remesh (e.g. -- --until remesh --faces 2000)
-// Results: DIR/results.csv, DIR/results.jsonl (appended), DIR/summary.json, and a summary on stdout.
+// Results: DIR/results.csv, DIR/results.jsonl (appended), DIR/summary.json, DIR/summary.html (a page
+// with one row per mesh of this run, linking to its report, log and output), and a summary on stdout.
 
 #include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/internal/html/writer.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -21,6 +25,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -47,7 +52,7 @@ struct Options
   std::string exe, out = "batch_out", manifest;
   double time_limit = 600.;
   unsigned shard = 0, shards = 1;
-  bool resume = false;
+  bool resume = false, html = false;
   std::vector<std::string> meshes, extra;
 };
 
@@ -94,6 +99,12 @@ Run run_one(const Options& o, const std::string& mesh)
   std::remove(report_file.c_str());
 
   std::vector<std::string> args = {o.exe, mesh, "-o", output_file, "--report", report_file};
+  if(o.html)
+  {
+    const std::string html_file = o.out + "/" + r.name + ".html";
+    std::remove(html_file.c_str());
+    args.insert(args.end(), {"--html", html_file});
+  }
   args.insert(args.end(), o.extra.begin(), o.extra.end());
   std::vector<char*> argv;
   for(std::string& a : args) argv.push_back(&a[0]);
@@ -190,6 +201,76 @@ double percentile(std::vector<double> v, double p)
   return v[i] + (x - double(i)) * (v[j] - v[i]);
 }
 
+using QR::internal::html::escape_html;
+
+// A file name relative to the summary page (all files are in the output directory), as a link target:
+// percent-encoded except the characters that are safe in a path.
+std::string href(const std::string& file)
+{
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for(unsigned char c : file)
+  {
+    if(std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') out += char(c);
+    else { out += '%'; out += hex[c >> 4]; out += hex[c & 15]; }
+  }
+  return out;
+}
+
+// The summary page: self-contained (no script, no external file), one row per mesh of this run with its
+// status, times, output size and quality figures; failures sort first so that they are not missed.
+void write_summary_html(const std::string& path, const Options& o, const std::vector<Run>& runs,
+                        const QR::Report& summary)
+{
+  std::ofstream os(path);
+  if(!os) { std::cerr << "quad_remesh_batch: cannot write " << path << "\n"; return; }
+  std::vector<const Run*> order;
+  for(const Run& r : runs) order.push_back(&r);
+  std::stable_sort(order.begin(), order.end(), [](const Run* a, const Run* b) {
+    return (a->status == "ok") < (b->status == "ok");
+  });
+  os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>quad_remesh batch summary</title>\n"
+     << "<style>body{font:13px/1.35 system-ui,sans-serif;margin:16px;color:#222}table{border-collapse:collapse}"
+     << "td,th{padding:2px 7px;border-bottom:1px solid #ddd;text-align:right;white-space:nowrap}"
+     << "td:first-child,th:first-child,td.text{text-align:left}th{background:#eee;position:sticky;top:0}"
+     << "tr.fail td{background:#fde8e8}.err{color:#a00;white-space:normal;text-align:left;max-width:40em}</style>\n"
+     << "</head>\n<body>\n<h1>quad_remesh batch summary</h1>\n<p>";
+  for(std::size_t i = 0; i < summary.keys().size(); ++i)
+    os << (i > 0 ? ", " : "") << escape_html(summary.keys()[i]) << ": <b>" << number_or_empty(&summary.elements()[i]) << "</b>";
+  os << "</p>\n<p>program: <code>" << escape_html(o.exe) << "</code>";
+  for(const std::string& a : o.extra) os << " <code>" << escape_html(a) << "</code>";
+  os << "</p>\n<table>\n<tr><th>mesh</th><th>status</th><th>seconds</th><th>peak MiB</th><th>input F</th><th>output F</th>";
+  for(const std::string& s : stage_names) os << "<th>" << s << " s</th>";
+  for(const std::string& k : quality_keys) os << "<th>" << escape_html(k) << "</th>";
+  os << "<th>files</th><th>error</th></tr>\n";
+  for(const Run* r : order)
+  {
+    const QR::Report* input = r->report.find("input");
+    const QR::Report* output = r->report.find("output");
+    const QR::Report* q = quality_of(r->report);
+    const QR::Report* err = r->report.find("error");
+    os << "<tr" << (r->status == "ok" ? "" : " class=\"fail\"") << "><td>" << escape_html(r->name) << "</td><td class=\"text\">"
+       << escape_html(r->status) << "</td><td>" << std::fixed << std::setprecision(2) << r->seconds
+       << std::defaultfloat << std::setprecision(6) << "</td><td>" << r->peak_kb / 1024 << "</td><td>"
+       << number_or_empty(input ? input->find("F") : nullptr) << "</td><td>"
+       << number_or_empty(output ? output->find("F") : nullptr) << "</td>";
+    for(const std::string& s : stage_names)
+    {
+      const QR::Report* st = stage_of(r->report, s);
+      os << "<td>" << number_or_empty(st ? st->find("seconds") : nullptr) << "</td>";
+    }
+    for(const std::string& k : quality_keys) os << "<td>" << escape_html(number_or_empty(q ? q->find(k) : nullptr)) << "</td>";
+    os << "<td class=\"text\">";
+    const std::pair<const char*, const char*> files[] = {
+      {".html", "report"}, {".json", "json"}, {".log", "log"}, {"_quad.obj", "output"}};
+    for(const auto& f : files)
+      if(file_exists(o.out + "/" + r->name + f.first))
+        os << "<a href=\"" << href(r->name + f.first) << "\">" << f.second << "</a> ";
+    os << "</td><td class=\"err\">" << escape_html(err ? err->string() : std::string()) << "</td></tr>\n";
+  }
+  os << "</table>\n</body>\n</html>\n";
+}
+
 Options parse(int argc, char** argv)
 {
   Options o;
@@ -206,6 +287,7 @@ Options parse(int argc, char** argv)
     else if(a == "--time-limit") o.time_limit = std::stod(value());
     else if(a == "--manifest") o.manifest = value();
     else if(a == "--resume") o.resume = true;
+    else if(a == "--html") o.html = true;
     else if(a == "--shard")
     {
       const std::string s = value();
@@ -243,7 +325,7 @@ int main(int argc, char** argv)
   } catch(const std::exception& e) {
     if(std::string(e.what()) != "help") std::cerr << "quad_remesh_batch: " << e.what() << "\n\n";
     std::cerr << "usage: quad_remesh_batch [--exe PATH] [--out DIR] [--time-limit S] [--shard I/N] [--resume]\n"
-                 "                         [--manifest FILE] MESH... [-- quad_remesh options]\n";
+                 "                         [--html] [--manifest FILE] MESH... [-- quad_remesh options]\n";
     return 2;
   }
   if(o.exe.empty()) o.exe = default_exe(argv[0]);
@@ -329,6 +411,7 @@ int main(int argc, char** argv)
   summary["SJ_mean_median"] = percentile(sj, 0.5);
   summary["irregular_median"] = percentile(irregular, 0.5);
   std::ofstream(o.out + "/summary.json") << summary.to_json() << "\n";
+  write_summary_html(o.out + "/summary.html", o, runs, summary);
   std::cout << "summary: " << summary.to_json(-1) << "\n";
   return 0;
 }

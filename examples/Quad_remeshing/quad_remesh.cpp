@@ -374,6 +374,12 @@ private:
       std::ofstream g(opt_.dump_dir + "/4_singularities.ply");
       QR::write_cross_field_singularities_PLY(g, state_.tmesh, state_.singularity);
     }
+    if(!opt_.html_file.empty())
+    {
+      extra_layers_.push_back(QR::cross_field_layer("cross field", state_.tmesh, state_.field));
+      extra_layers_.back().visible = false;
+      extra_layers_.push_back(QR::singularities_layer("singularities", state_.tmesh, state_.singularity));
+    }
     QR::Report r = st.report();
     const QR::Report rs = ss.report();
     for(std::size_t i = 0; i < rs.keys().size(); ++i)
@@ -393,6 +399,7 @@ private:
       std::ofstream g(opt_.dump_dir + "/5_paths.polylines.txt");
       state_.layout->write_polylines(g);
     }
+    if(!opt_.html_file.empty()) extra_layers_.push_back(QR::patch_layout_layer("patch layout", *state_.layout));
     return st.report();
   }
 
@@ -532,7 +539,9 @@ private:
     if(opt_.html_file.empty()) return;
     try {
       QR::Html_report_scene scene;
-      scene.title = "quad_remesh: " + opt_.input;
+      scene.title = "quad_remesh: " + opt_.input.substr(opt_.input.find_last_of('/') + 1); // the path is in the report
+      // shown at first: the latest surface (the quad mesh, else the patch layout, else the input) and
+      // the lines and points but the cross field; the other layers are a click away
       if(num_faces(state_.input) > 0)
         scene.layers.push_back(QR::polygon_mesh_layer("input (repaired)", state_.input));
       for(QR::Html_layer& l : extra_layers_) scene.layers.push_back(l);
@@ -542,8 +551,15 @@ private:
         scene.layers.push_back(QR::irregular_vertices_layer("irregular vertices", state_.qmesh));
         scene.histograms = QR::quad_mesh_histograms(state_.qmesh);
       }
-      else if(report_["status"].string() == "ok" && last_stage_ != "repair" && num_faces(state_.tmesh) > 0)
+      else if(report_["status"].string() == "ok" && last_stage_ != "repair" && num_faces(state_.tmesh) > 0 &&
+              std::none_of(extra_layers_.begin(), extra_layers_.end(),
+                           [](const QR::Html_layer& l) { return !l.polygons.faces.empty(); })) // no patch layout
         scene.layers.push_back(QR::polygon_mesh_layer("output of stage '" + last_stage_ + "'", state_.tmesh));
+      std::size_t surface = 0; // the last layer with faces stays shown
+      for(std::size_t i = 0; i < scene.layers.size(); ++i)
+        if(!scene.layers[i].polygons.faces.empty()) surface = i;
+      for(std::size_t i = 0; i < scene.layers.size(); ++i)
+        if(!scene.layers[i].polygons.faces.empty() && i != surface) scene.layers[i].visible = false;
       scene.report = report_;
       QR::write_html_report(opt_.html_file, scene);
     } catch(const std::exception& e) {

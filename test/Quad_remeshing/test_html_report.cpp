@@ -6,6 +6,10 @@
 // written here and checks that it renders.
 
 #include <CGAL/Quad_remeshing/IO.h>
+#include <CGAL/Quad_remeshing/cross_field.h>
+#include <CGAL/Quad_remeshing/detect_feature_edges.h>
+#include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>
+#include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
@@ -18,8 +22,11 @@
 #include "test_support.h"
 
 #include <cstdio>
+#include <memory>
+#include <tuple>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -172,9 +179,115 @@ const Fandisk_report& fandisk()
   return f;
 }
 
+// fandisk through the stages up to the patch layout, as the command-line program runs them: the
+// data of the cross field, singularity and layout layers.
+struct Fandisk_layout
+{
+  typedef CGAL::Quad_remeshing::Patch_layout<Mesh> Layout;
+  Mesh tm;
+  Mesh::Property_map<Mesh::Face_index, qr_test::Kernel::Vector_3> field;
+  Mesh::Property_map<Mesh::Vertex_index, int> singularity;
+  std::unique_ptr<Layout> layout;
+
+  Fandisk_layout()
+  {
+    QR::read_and_repair(qr_test::data_file("fandisk.off"), tm);
+    auto feature = tm.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+    auto corner = tm.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
+    QR::detect_feature_edges(tm, feature, QR::parameters::vertex_is_feature_corner_map(corner));
+    QR::remesh_for_quadrangulation(tm, feature,
+                                   QR::parameters::combine(QR::parameters::quad_edge_length(QR::quad_edge_length_from_scale(tm, 1.)),
+                                                           QR::parameters::vertex_is_feature_corner_map(corner)));
+    tm.collect_garbage();
+    field = tm.add_property_map<Mesh::Face_index, qr_test::Kernel::Vector_3>("f:field", CGAL::NULL_VECTOR).first;
+    singularity = tm.add_property_map<Mesh::Vertex_index, int>("v:singularity", 0).first;
+    QR::compute_cross_field(tm, feature, field);
+    QR::compute_cross_field_singularities(tm, feature, field, singularity);
+    layout = std::make_unique<Layout>(tm, field, singularity);
+    QR::trace_patch_layout(tm, feature, *layout);
+  }
+};
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(html_report)
+
+BOOST_AUTO_TEST_CASE(layers_of_the_field_and_layout_stages)
+{
+  const Fandisk_layout f;
+  const std::size_t F = f.tm.number_of_faces();
+
+  // one cross (two segments through the centroid, orthogonal, in the face plane) per face
+  const QR::Html_layer cross = QR::cross_field_layer("cross field", f.tm, f.field);
+  BOOST_CHECK_EQUAL(cross.segments.endpoints.size(), 4 * F);
+  BOOST_CHECK_EQUAL(cross.segments.colors.size(), 2 * F);
+  const auto& e = cross.segments.endpoints;
+  for(std::size_t i = 0; i < e.size(); i += 4)
+  {
+    double dot = 0., l0 = 0., l1 = 0.;
+    for(int d = 0; d < 3; ++d)
+    {
+      const double a = e[i + 1][d] - e[i][d], b = e[i + 3][d] - e[i + 2][d];
+      dot += a * b; l0 += a * a; l1 += b * b;
+      BOOST_REQUIRE_SMALL((e[i][d] + e[i + 1][d]) - (e[i + 2][d] + e[i + 3][d]), 1e-9); // same centre
+    }
+    BOOST_REQUIRE_GT(l0, 0.);
+    BOOST_REQUIRE_CLOSE(l0, l1, 1e-6);
+    BOOST_REQUIRE_SMALL(dot / l0, 1e-9);
+  }
+  // the cap keeps every k-th face only
+  const QR::Html_layer capped = QR::cross_field_layer("cross field", f.tm, f.field, F / 10);
+  BOOST_CHECK_LE(capped.segments.endpoints.size(), 4 * (F / 10));
+  BOOST_CHECK_GE(capped.segments.endpoints.size(), 4 * (F / 11));
+
+  // singularities: the vertices of non-zero index, by valence 4 - index
+  const QR::Html_layer sing = QR::singularities_layer("singularities", f.tm, f.singularity);
+  std::map<int, std::size_t> by_valence;
+  for(auto v : f.tm.vertices())
+    if(f.singularity[v] != 0) ++by_valence[4 - f.singularity[v]];
+  BOOST_REQUIRE(!by_valence.empty()); // fandisk has singularities (valence 3 and 5 at least)
+  std::size_t total = 0;
+  for(const auto& c : by_valence) total += c.second;
+  BOOST_CHECK_EQUAL(sing.points.points.size(), total);
+  BOOST_REQUIRE_EQUAL(sing.legend.size(), by_valence.size());
+  std::size_t i = 0;
+  for(const auto& c : by_valence)
+    BOOST_CHECK_EQUAL(sing.legend[i++].label, "valence " + std::to_string(c.first) + ": " + std::to_string(c.second));
+
+  // the layout: one colour per patch (the same within a patch, distinct between neighbouring patches),
+  // every arc edge as a segment, corners and T-junctions as points
+  const QR::Html_layer lay = QR::patch_layout_layer("patch layout", *f.layout);
+  BOOST_REQUIRE_EQUAL(lay.polygons.faces.size(), F);
+  BOOST_REQUIRE_EQUAL(lay.polygons.face_colors.size(), F);
+  std::map<std::size_t, CGAL::IO::Color> patch_color;
+  i = 0;
+  for(auto face : f.tm.faces())
+  {
+    const auto it = patch_color.emplace(f.layout->patch_id(face), lay.polygons.face_colors[i++]).first;
+    BOOST_REQUIRE(it->second == lay.polygons.face_colors[i - 1]);
+  }
+  BOOST_CHECK_EQUAL(patch_color.size(), f.layout->number_of_patches());
+  BOOST_CHECK_GT(patch_color.size(), 20u);
+  std::size_t arc_edges = 0;
+  for(const auto& a : f.layout->arcs()) arc_edges += a.halfedges.size();
+  BOOST_CHECK_EQUAL(lay.segments.endpoints.size(), 2 * arc_edges);
+  std::set<Mesh::Vertex_index> corners;
+  for(const auto& P : f.layout->patches()) corners.insert(P.corners.begin(), P.corners.end());
+  const std::size_t t_junctions = f.layout->statistics().t_junctions;
+  BOOST_CHECK_EQUAL(lay.points.points.size(), corners.size() + t_junctions);
+  BOOST_REQUIRE_EQUAL(lay.legend.size(), 3u);
+  BOOST_CHECK_EQUAL(lay.legend[0].label, std::to_string(f.layout->number_of_patches()) + " patches");
+  BOOST_CHECK_EQUAL(lay.legend[1].label, "corners: " + std::to_string(corners.size()));
+  BOOST_CHECK_EQUAL(lay.legend[2].label, "T-junctions: " + std::to_string(t_junctions));
+  // categorical colours: the first patches get distinct colours
+  std::set<std::tuple<int, int, int>> first;
+  for(std::size_t k = 0; k < 40; ++k)
+  {
+    const CGAL::IO::Color c = QR::categorical_color(k);
+    first.emplace(c.red(), c.green(), c.blue());
+  }
+  BOOST_CHECK_EQUAL(first.size(), 40u);
+}
 
 BOOST_AUTO_TEST_CASE(scaled_jacobian_of_simple_quads)
 {

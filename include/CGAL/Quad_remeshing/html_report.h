@@ -27,9 +27,11 @@
 #include <ostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 /// directory of the three.js npm package (holding `build/three.module.js`) read by `write_html_report()` (`std::string`)
@@ -319,6 +321,209 @@ Html_layer irregular_vertices_layer(const std::string& name, const PolygonMesh& 
   }
   for(const auto& c : counts)
     layer.legend.push_back({"valence " + std::to_string(c.first) + ": " + std::to_string(c.second), valence_color(c.first)});
+  return layer;
+}
+
+/// \ingroup PkgQuadRemeshingRef
+/// The `i`-th of a sequence of distinct, saturated colours (golden-ratio steps of the hue, alternating
+/// lightness), for categorical data such as patch ids: neighbouring indices get far apart hues.
+inline CGAL::IO::Color categorical_color(std::size_t i)
+{
+  const double h = std::fmod(0.11 + 0.6180339887498949 * double(i), 1.) * 6.;
+  const double s = 0.55, l = (i % 3 == 0) ? 0.52 : (i % 3 == 1 ? 0.66 : 0.42);
+  const double c = (1. - std::abs(2. * l - 1.)) * s, x = c * (1. - std::abs(std::fmod(h, 2.) - 1.)), m = l - c / 2.;
+  const int sector = int(h) % 6;
+  const double r = (sector == 0 || sector == 5) ? c : (sector == 1 || sector == 4) ? x : 0.;
+  const double g = (sector == 1 || sector == 2) ? c : (sector == 0 || sector == 3) ? x : 0.;
+  const double b = (sector == 3 || sector == 4) ? c : (sector == 2 || sector == 5) ? x : 0.;
+  const auto byte = [&](double v) { return static_cast<unsigned char>(std::lround(255. * (v + m))); };
+  return CGAL::IO::Color(byte(r), byte(g), byte(b));
+}
+
+/// \ingroup PkgQuadRemeshingRef
+/// A layer of segments showing the cross field of the triangle mesh `tmesh`: a cross at the centroid of
+/// every face, made of the field direction `get(face_field, f)` projected into the face plane and its
+/// rotation by a quarter turn about the face normal, each arm `0.3` times the mean edge length of the
+/// face. The first direction is drawn in `color`, the second one a little darker, so that the crosses
+/// read as crosses and not as stars. Faces with a null field or a degenerate normal get no cross.
+///
+/// The page holds two segments per drawn face; on a mesh with more than `max_crosses` faces, only every
+/// `ceil(num_faces / max_crosses)`-th face in the order of `faces(tmesh)` gets a cross (deterministic), which
+/// keeps the report small on huge meshes (about 150 bytes per cross). `max_crosses == 0` means no limit.
+/// @tparam FaceFieldMap a readable property map from faces to a vector type with `x()`, `y()`, `z()`
+///         (one direction of the cross, as computed by `compute_cross_field()`)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `tmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tmesh)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename FaceFieldMap, typename NamedParameters = parameters::Default_named_parameters>
+Html_layer cross_field_layer(const std::string& name, const TriangleMesh& tmesh, FaceFieldMap face_field,
+                             std::size_t max_crosses = 60000, CGAL::IO::Color color = CGAL::IO::Color(20, 110, 200),
+                             const NamedParameters& np = parameters::default_values())
+{
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tmesh));
+  typedef std::array<double, 3> A;
+  const auto sub = [](const A& a, const A& b) { return A{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  const auto dot = [](const A& a, const A& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const auto cross = [](const A& a, const A& b) {
+    return A{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const std::size_t n = static_cast<std::size_t>(num_faces(tmesh));
+  const std::size_t stride = (max_crosses == 0 || n <= max_crosses) ? 1 : (n + max_crosses - 1) / max_crosses;
+  const CGAL::IO::Color second(static_cast<unsigned char>(color.red() * 0.6), static_cast<unsigned char>(color.green() * 0.6),
+                               static_cast<unsigned char>(color.blue() * 0.6));
+  Html_layer layer;
+  layer.name = name;
+  std::size_t i = 0;
+  for(auto f : faces(tmesh))
+  {
+    if(i++ % stride != 0) continue;
+    std::vector<A> p;
+    for(auto v : vertices_around_face(halfedge(f, tmesh), tmesh)) p.push_back(internal::html::to_array(get(vpm, v)));
+    if(p.size() < 3) continue;
+    A c{0., 0., 0.}, normal{0., 0., 0.};
+    double perimeter = 0.;
+    for(std::size_t k = 0; k < p.size(); ++k)
+    {
+      for(int d = 0; d < 3; ++d) c[d] += p[k][d] / double(p.size());
+      const A e = sub(p[(k + 1) % p.size()], p[k]);
+      perimeter += std::sqrt(dot(e, e));
+      const A t = cross(p[k], p[(k + 1) % p.size()]); // Newell's normal
+      for(int d = 0; d < 3; ++d) normal[d] += t[d];
+    }
+    const double nn = std::sqrt(dot(normal, normal));
+    if(!(nn > 0.)) continue;
+    for(double& x : normal) x /= nn;
+    const auto w = get(face_field, f);
+    A u{CGAL::to_double(w.x()), CGAL::to_double(w.y()), CGAL::to_double(w.z())};
+    const double un = dot(u, normal);
+    for(int d = 0; d < 3; ++d) u[d] -= un * normal[d];
+    const double ul = std::sqrt(dot(u, u));
+    if(!(ul > 0.) || !std::isfinite(ul)) continue;
+    const double arm = 0.3 * perimeter / double(p.size());
+    for(double& x : u) x *= arm / ul;
+    const A v = cross(normal, u);
+    for(const A& d : {u, v})
+    {
+      layer.segments.endpoints.push_back(A{c[0] - d[0], c[1] - d[1], c[2] - d[2]});
+      layer.segments.endpoints.push_back(A{c[0] + d[0], c[1] + d[1], c[2] + d[2]});
+    }
+    layer.segments.colors.push_back(color);
+    layer.segments.colors.push_back(second);
+  }
+  layer.legend.push_back({"field direction", color});
+  layer.legend.push_back({"quarter turn", second});
+  if(stride > 1) layer.legend.push_back({"one face in " + std::to_string(stride), CGAL::IO::Color(255, 255, 255)});
+  return layer;
+}
+
+/// \ingroup PkgQuadRemeshingRef
+/// A layer of points: the singularities of a cross field on `tmesh`, i.e. the vertices `v` with
+/// `get(vertex_singularity, v) != 0`. The index `k` is in quarter turns as computed by
+/// `compute_cross_field_singularities()`; the valence `4 - k` gives the colour (`valence_color()`), and the
+/// legend gives the count per valence.
+/// @tparam VertexSingularityMap a readable property map from vertices to `int`
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of `tmesh`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tmesh)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename VertexSingularityMap, typename NamedParameters = parameters::Default_named_parameters>
+Html_layer singularities_layer(const std::string& name, const TriangleMesh& tmesh, VertexSingularityMap vertex_singularity,
+                               const NamedParameters& np = parameters::default_values())
+{
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tmesh));
+  Html_layer layer;
+  layer.name = name;
+  layer.points.size = 11.;
+  std::map<int, std::size_t> counts;
+  for(auto v : vertices(tmesh))
+  {
+    const int k = int(get(vertex_singularity, v));
+    if(k == 0) continue;
+    const std::size_t valence = k >= 4 ? 0 : std::size_t(4 - k);
+    ++counts[4 - k];
+    layer.points.points.push_back(internal::html::to_array(get(vpm, v)));
+    layer.points.colors.push_back(valence_color(valence));
+  }
+  for(const auto& c : counts)
+    layer.legend.push_back({"valence " + std::to_string(c.first) + ": " + std::to_string(c.second),
+                            valence_color(c.first <= 0 ? 0 : std::size_t(c.first))});
+  return layer;
+}
+
+/// \ingroup PkgQuadRemeshingRef
+/// A layer showing a patch layout traced on its triangle mesh: the faces of the mesh coloured by patch
+/// (`categorical_color()` of the patch id), the patch boundaries (the arcs) as dark segments, and as
+/// points the corners of the patches (black) and the T-junctions (magenta), i.e. the vertices where a
+/// boundary goes straight on in a patch while a third boundary edge meets it there, counted as in the
+/// layout's statistics. The legend gives the numbers of patches, corners and T-junctions.
+///
+/// The layout type is a template parameter so that this header does not depend on `Patch_layout.h`.
+/// @tparam PatchLayout `CGAL::Quad_remeshing::Patch_layout` (or a class with its `mesh()`, `patches()`,
+///         `patch_id()`, `arcs()` and `is_cut()`)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `layout.mesh()`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the vertex descriptor of the mesh}
+///     \cgalParamDefault{`get(CGAL::vertex_point, layout.mesh())`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename PatchLayout, typename NamedParameters = parameters::Default_named_parameters>
+Html_layer patch_layout_layer(const std::string& name, const PatchLayout& layout,
+                              const NamedParameters& np = parameters::default_values())
+{
+  const auto& tmesh = layout.mesh();
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tmesh));
+  Html_layer layer = polygon_mesh_layer(name, tmesh, np);
+  for(auto f : faces(tmesh)) layer.polygons.face_colors.push_back(categorical_color(layout.patch_id(f)));
+  layer.segments.color = CGAL::IO::Color(25, 25, 25);
+  for(const auto& arc : layout.arcs())
+    for(auto h : arc.halfedges)
+    {
+      layer.segments.endpoints.push_back(internal::html::to_array(get(vpm, source(h, tmesh))));
+      layer.segments.endpoints.push_back(internal::html::to_array(get(vpm, target(h, tmesh))));
+    }
+  const auto& patches = layout.patches();
+  typedef typename boost::graph_traits<std::decay_t<decltype(tmesh)>>::vertex_descriptor vertex_descriptor;
+  std::set<vertex_descriptor> corners, t_junctions;
+  for(const auto& P : patches)
+  {
+    corners.insert(P.corners.begin(), P.corners.end());
+    if(P.loops.empty()) continue;
+    for(std::size_t i = 0; i < P.loops[0].size(); ++i)
+    {
+      if(P.turns[0][i] != PatchLayout::STRAIGHT) continue;
+      const vertex_descriptor v = target(P.loops[0][i], tmesh);
+      std::size_t cut_degree = 0;
+      for(auto h : halfedges_around_target(v, tmesh))
+        if(layout.is_cut(edge(h, tmesh))) ++cut_degree;
+      if(cut_degree >= 3) t_junctions.insert(v);
+    }
+  }
+  const CGAL::IO::Color corner_color(0, 0, 0), junction_color(230, 0, 200);
+  for(vertex_descriptor v : corners)
+  {
+    layer.points.points.push_back(internal::html::to_array(get(vpm, v)));
+    layer.points.colors.push_back(corner_color);
+  }
+  for(vertex_descriptor v : t_junctions)
+  {
+    layer.points.points.push_back(internal::html::to_array(get(vpm, v)));
+    layer.points.colors.push_back(junction_color);
+  }
+  layer.points.size = 7.;
+  layer.legend.push_back({std::to_string(patches.size()) + " patches", categorical_color(0)});
+  layer.legend.push_back({"corners: " + std::to_string(corners.size()), corner_color});
+  layer.legend.push_back({"T-junctions: " + std::to_string(t_junctions.size()), junction_color});
   return layer;
 }
 

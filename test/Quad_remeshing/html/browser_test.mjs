@@ -2,11 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Browser test of the HTML report: opens REPORT.html offline in headless Chromium, requires that the
-// page reports data-status="ok" (no script or console error, something drawn), takes a screenshot,
-// decodes it (node's zlib only) and requires a drawn mesh in the viewer area. Fails, never skips,
-// when the browser is missing: the test setup installs it.
+// page reports data-status="ok" (no script or console error, something drawn), that every layer holding
+// elements covers pixels when drawn alone (the page measures it: data-pixels of its entry in the layer
+// list) and that each expected layer is there and not empty; takes a screenshot, decodes it (node's
+// zlib only) and requires a drawn mesh in the viewer area. Fails, never skips, when the browser is
+// missing: the test setup installs it.
 //
-//   node browser_test.mjs REPORT.html SCREENSHOT.png
+//   node browser_test.mjs REPORT.html SCREENSHOT.png [--expect-layers 'A|B|...']
+//                         [--layers-screenshot 'A|B|...' SCREENSHOT2.png]
+// --layers-screenshot takes a second screenshot showing these layers only (the page's #layers= address).
 // The browser is $CHROMIUM, else the first of chromium, chromium-browser, google-chrome in PATH.
 
 import { spawnSync } from 'node:child_process';
@@ -99,8 +103,17 @@ function decode_png(buffer) {
   return { width, height, channels, pixels };
 }
 
-const [report_arg, screenshot_arg] = process.argv.slice(2);
-if (!report_arg || !screenshot_arg) fail('usage: node browser_test.mjs REPORT.html SCREENSHOT.png');
+const usage = "usage: node browser_test.mjs REPORT.html SCREENSHOT.png [--expect-layers 'A|B'] " +
+              "[--layers-screenshot 'A|B' SCREENSHOT2.png]";
+const [report_arg, screenshot_arg, ...options] = process.argv.slice(2);
+if (!report_arg || !screenshot_arg) fail(usage);
+let expected_layers = [], extra_layers = null, extra_screenshot = null;
+for (let i = 0; i < options.length; ++i) {
+  if (options[i] === '--expect-layers' && i + 1 < options.length) expected_layers = options[++i].split('|');
+  else if (options[i] === '--layers-screenshot' && i + 2 < options.length) {
+    extra_layers = options[++i].split('|'); extra_screenshot = resolve(options[++i]);
+  } else fail(usage);
+}
 const report = resolve(report_arg), screenshot = resolve(screenshot_arg);
 if (!existsSync(report)) fail('no report ' + report + ' (the html_report test writes it)');
 const browser = find_browser();
@@ -115,23 +128,51 @@ const layers = Number((html_tag.match(/data-layers="(\d+)"/) || [0, 0])[1]);
 const drawn = Number((html_tag.match(/data-drawn="(\d+)"/) || [0, 0])[1]);
 if (!(layers > 0) || !(drawn > 0)) fail(`nothing drawn (layers ${layers}, primitives ${drawn})`);
 
-// 2. the mesh is visible: enough non-white pixels, in many colours (shading), in the viewer area
-rmSync(screenshot, { force: true });
-run_browser(browser, url, ['--screenshot=' + screenshot]);
-if (!existsSync(screenshot)) fail('no screenshot written');
-const png = decode_png(readFileSync(screenshot));
-const view_width = png.width - Math.round(SIDE_PANEL * png.width / WIDTH);
-let drawn_pixels = 0;
-const colours = new Set();
-for (let y = 0; y < png.height; ++y)
-  for (let x = 0; x < view_width; ++x) {
-    const i = (y * png.width + x) * png.channels;
-    const r = png.pixels[i], g = png.pixels[i + 1], b = png.pixels[i + 2];
-    if (r < 235 || g < 235 || b < 235) { ++drawn_pixels; colours.add((r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)); }
-  }
-const fraction = drawn_pixels / (view_width * png.height);
-if (fraction < 0.05) fail(`the viewer area is nearly empty (${(100 * fraction).toFixed(2)}% drawn)`);
-if (fraction > 0.95) fail(`the viewer area is filled (${(100 * fraction).toFixed(2)}% drawn): no mesh in view`);
-if (colours.size < 50) fail(`only ${colours.size} colours in the viewer area: the mesh is not shaded`);
-console.log(`browser_test: ok: ${layers} layers, ${drawn} primitives, ${(100 * fraction).toFixed(1)}% of the ` +
-            `viewer drawn in ${colours.size} colours; screenshot ${screenshot}`);
+// 2. every layer: what it holds and the pixels it covers alone
+const unescape = (t) => t.replace(/&quot;/g, '"').replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
+const attribute = (tag, name) => { const m = tag.match(new RegExp(' ' + name + '="([^"]*)"')); return m ? unescape(m[1]) : null; };
+const entries = new Map(), tags = dom.match(/<div class="layer"[^>]*>/g) || [], summary = [];
+if (tags.length !== layers) fail(`${tags.length} layers listed, ${layers} in the scene`);
+for (const tag of tags) {
+  const name = attribute(tag, 'data-layer-name'), e = { faces: 0, segments: 0, points: 0, pixels: -1 };
+  for (const k of Object.keys(e)) e[k] = Number(attribute(tag, 'data-' + k) ?? -1);
+  const elements = e.faces + e.segments + e.points;
+  if (!(e.pixels >= 0)) fail(`layer '${name}': no pixel count`);
+  if (elements > 0 && e.pixels === 0) fail(`layer '${name}' holds ${elements} elements but covers no pixel`);
+  summary.push(`${name}: ${e.faces} faces, ${e.segments} segments, ${e.points} points, ${e.pixels} px`);
+  entries.set(name, e);
+}
+for (const name of expected_layers) {
+  const e = entries.get(name);
+  if (!e) fail(`expected layer '${name}' is missing (layers: ${[...entries.keys()].join(', ')})`);
+  if (e.faces + e.segments + e.points === 0) fail(`expected layer '${name}' is empty`);
+}
+console.log('browser_test: layers\n  ' + summary.join('\n  '));
+
+// 3. the mesh is visible: enough non-white pixels, in many colours (shading), in the viewer area
+function check_screenshot(page_url, file) {
+  rmSync(file, { force: true });
+  run_browser(browser, page_url, ['--screenshot=' + file]);
+  if (!existsSync(file)) fail('no screenshot written');
+  const png = decode_png(readFileSync(file));
+  const view_width = png.width - Math.round(SIDE_PANEL * png.width / WIDTH);
+  let drawn_pixels = 0;
+  const colours = new Set();
+  for (let y = 0; y < png.height; ++y)
+    for (let x = 0; x < view_width; ++x) {
+      const i = (y * png.width + x) * png.channels;
+      const r = png.pixels[i], g = png.pixels[i + 1], b = png.pixels[i + 2];
+      if (r < 235 || g < 235 || b < 235) { ++drawn_pixels; colours.add((r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)); }
+    }
+  const fraction = drawn_pixels / (view_width * png.height);
+  if (fraction < 0.05) fail(`${file}: the viewer area is nearly empty (${(100 * fraction).toFixed(2)}% drawn)`);
+  if (fraction > 0.95) fail(`${file}: the viewer area is filled (${(100 * fraction).toFixed(2)}% drawn): no mesh in view`);
+  if (colours.size < 50) fail(`${file}: only ${colours.size} colours in the viewer area: the mesh is not shaded`);
+  return `${(100 * fraction).toFixed(1)}% of the viewer drawn in ${colours.size} colours; screenshot ${file}`;
+}
+let message = `browser_test: ok: ${layers} layers, ${drawn} primitives, ` + check_screenshot(url, screenshot);
+if (extra_layers) {
+  for (const name of extra_layers) if (!entries.has(name)) fail(`--layers-screenshot: no layer '${name}'`);
+  message += '; ' + check_screenshot(url + '#layers=' + extra_layers.map(encodeURIComponent).join(','), extra_screenshot);
+}
+console.log(message);

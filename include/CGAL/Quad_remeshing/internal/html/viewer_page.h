@@ -22,6 +22,8 @@ body { display: flex; }
 #side { width: 390px; overflow-y: auto; border-left: 1px solid #ccc; padding: 8px 12px; box-sizing: border-box; background: #f7f7f7; }
 h1 { font-size: 16px; margin: 4px 0 8px; }
 h2 { font-size: 14px; margin: 14px 0 6px; border-bottom: 1px solid #ccc; }
+h3 { font-size: 13px; margin: 8px 0 3px; }
+h4 { font-size: 12px; margin: 6px 0 2px; }
 .layer { margin: 3px 0; }
 .legend { margin: 2px 0 4px 22px; font-size: 11px; }
 .swatch { display: inline-block; width: 10px; height: 10px; margin: 0 3px 0 8px; border: 1px solid #666; }
@@ -171,8 +173,14 @@ function points_object(p) {
 
 const side_layers = document.getElementById('qr-layers');
 const box = new THREE.Box3();
-const objects = [];
+const objects = [], layer_divs = [];
+// "#layers=a,b" in the address shows these layers only (names URL-encoded), e.g. for screenshots
+const shown = (() => {
+  const m = /(?:^#|&)layers=([^&]*)/.exec(window.location.hash);
+  return m ? new Set(m[1].split(',').map((x) => decodeURIComponent(x))) : null;
+})();
 for (const layer of scene_data.layers) {
+  if (shown) layer.visible = shown.has(layer.name);
   const group = new THREE.Group();
   if (layer.polygons.faces.length) group.add(polygons_object(layer.polygons));
   if (layer.segments.endpoints.length) group.add(segments_object(layer.segments));
@@ -184,6 +192,12 @@ for (const layer of scene_data.layers) {
   box.expandByObject(group);
 
   const div = document.createElement('div'); div.className = 'layer';
+  // what the layer holds, for tests: data-faces, data-segments, data-points (data-pixels is set below)
+  div.dataset.layerName = layer.name;
+  div.dataset.faces = String(layer.polygons.faces.length);
+  div.dataset.segments = String(layer.segments.endpoints.length / 6);
+  div.dataset.points = String(layer.points.points.length / 3);
+  layer_divs.push(div);
   const label = document.createElement('label');
   const box_input = document.createElement('input'); box_input.type = 'checkbox'; box_input.checked = layer.visible;
   box_input.addEventListener('change', () => { group.visible = box_input.checked; render(); });
@@ -295,14 +309,21 @@ if (is_object(report)) {
   if (Array.isArray(report.stages))
     for (const s of report.stages) if (is_object(s) && typeof s.seconds === 'number') timed.push([String(s.name ?? timed.length), s.seconds]);
   for (const [k, v] of Object.entries(report)) if (is_object(v) && typeof v.seconds === 'number') timed.push([k, v.seconds]);
+  // the summary above the histograms: the timings, then the quality of the output
+  const summary_div = document.getElementById('qr-summary');
   if (timed.length) {
-    const h = document.createElement('h3'); h.textContent = 'Timings'; report_div.append(h);
+    const h = document.createElement('h3'); h.textContent = 'Timings'; summary_div.append(h);
     const longest = Math.max(1e-12, ...timed.map(([, t]) => t));
     const total = timed.reduce((a, [, t]) => a + t, 0);
-    report_div.append(table(timed.map(([k, t]) => {
+    summary_div.append(table(timed.map(([k, t]) => {
       const bar = document.createElement('span'); bar.className = 'bar'; bar.style.width = (80 * t / longest) + 'px';
       return [k, t.toFixed(3) + ' s', bar];
     }).concat([['total', total.toFixed(3) + ' s', '']]), ['stage', 'time', '']));
+  }
+  const quality = is_object(report.output) && is_object(report.output.quality) ? report.output.quality : null;
+  if (quality) {
+    const h = document.createElement('h3'); h.textContent = 'Quality of the output'; summary_div.append(h);
+    summary_div.append(table(scalar_rows(quality)));
   }
   add_tables('', report, 0);
 }
@@ -310,6 +331,23 @@ document.getElementById('qr-report-json').textContent = JSON.stringify(report, n
 
 fit();
 resize();
+// Each layer alone: the pixels it covers in the default view (a layer with elements and no pixel is a
+// bug of the viewer or of the data); the count goes to data-pixels of its entry in the layer list.
+{
+  const gl = renderer.getContext(), w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+  const buffer = new Uint8Array(4 * w * h);
+  const visible = objects.map((o) => o.visible);
+  objects.forEach((o, i) => {
+    objects.forEach((p, j) => { p.visible = i === j; });
+    render();
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, buffer);
+    let pixels = 0;
+    for (let k = 0; k < buffer.length; k += 4) if (buffer[k] < 250 || buffer[k + 1] < 250 || buffer[k + 2] < 250) ++pixels;
+    layer_divs[i].dataset.pixels = String(pixels);
+  });
+  objects.forEach((o, i) => { o.visible = visible[i]; });
+  render();
+}
 const drawn = renderer.info.render.triangles + renderer.info.render.lines + renderer.info.render.points;
 document.documentElement.dataset.layers = String(objects.length);
 document.documentElement.dataset.drawn = String(drawn);

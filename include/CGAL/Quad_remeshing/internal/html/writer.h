@@ -373,6 +373,7 @@ void write_page(std::ostream& os, const Scene& scene, const Threejs_modules& thr
      << "<div id=\"view\"><div id=\"help\">left drag: orbit, right drag: pan, wheel: zoom</div></div>\n"
      << "<div id=\"side\">\n<h1>" << escape_html(scene.title) << "</h1>\n"
      << "<h2>Layers</h2><div id=\"qr-layers\"></div><button id=\"qr-fit\">fit view</button>\n"
+     << "<h2>Summary</h2><div id=\"qr-summary\"></div>\n"
      << "<h2>Histograms</h2><div id=\"qr-histograms\"></div>\n"
      << "<h2>Report</h2><div id=\"qr-report-tables\"></div>\n"
      << "<details><summary>JSON</summary><pre id=\"qr-report-json\"></pre></details>\n</div>\n"
