@@ -217,8 +217,10 @@ BOOST_AUTO_TEST_CASE(exhaustive_small_side_counts)
   BOOST_TEST(2 * all_general < all_ring);
   // n=2: 32 even vectors minus (1,1); n=3: 256; n=4: 2048; n=5: 3888; n=6: 23328
   BOOST_TEST(cases == 29551u);
-#ifdef NDEBUG
-  BOOST_TEST(secs < 10.); // issue #8: the whole exhaustive set in under 10 s (optimised build)
+  // issue #8: the whole exhaustive set in under 10 s in an optimised build; an AddressSanitizer build is
+  // several times slower, and stage_benchmark measures this target anyway
+#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
+  BOOST_TEST(secs < 10.);
 #endif
 }
 
