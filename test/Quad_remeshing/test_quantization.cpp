@@ -72,9 +72,40 @@ std::vector<bool> used_arcs(const Side_quantization_problem& pb)
   return used;
 }
 
-// The model's objective evaluated independently (squared deviation, quads |e0-e2|+|e1-e3|, Tarini).
-double objective(const Side_quantization_problem& pb, const std::vector<int>& s)
+// Twice the sub-sides (up: start corner to separatrix, down: separatrix to end corner) of side j of a
+// 3, 5 or 6-sided patch with side counts E, written out per patch size (Tarini's closed forms).
+void up_down(const std::vector<int>& e, int j, int& up, int& down)
 {
+  const int n = int(e.size());
+  auto E = [&](int k) { return e[((k % n) + n) % n]; };
+  if(n == 3) { down = E(j) + E(j + 2) - E(j + 1); up = E(j) + E(j + 1) - E(j + 2); }
+  if(n == 5) { down = E(j) + E(j + 1) + E(j + 2) - E(j + 3) - E(j + 4); up = E(j + 3) + E(j + 4) + E(j) - E(j + 1) - E(j + 2); }
+  if(n == 6) { down = E(j) + E(j + 2) - E(j + 4); up = E(j + 4) + E(j) - E(j + 2); }
+}
+
+std::vector<int> side_counts(const Side_quantization_problem& pb, std::size_t p, const std::vector<int>& s)
+{
+  std::vector<int> e(pb.patches[p].size(), 0);
+  for(std::size_t i = 0; i < e.size(); ++i) for(std::size_t a : pb.patches[p][i]) e[i] += s[a];
+  return e;
+}
+
+// Alignment of the pair (p, i) - (q, j): the shared line is walked in opposite directions.
+int misalignment(const Side_quantization_problem& pb, const QR::internal::Alignment_pair& ap, const std::vector<int>& s)
+{
+  int up_p, down_p, up_q, down_q;
+  up_down(side_counts(pb, ap.p, s), int(ap.i), up_p, down_p);
+  up_down(side_counts(pb, ap.q, s), int(ap.j), up_q, down_q);
+  return std::abs(up_p - down_q) + std::abs(down_p - up_q);
+}
+
+// The model's objective evaluated independently (squared deviation, quads |e0-e2|+|e1-e3|, Tarini,
+// alignment of the given pairs with weight 9).
+double objective(const Side_quantization_problem& pb, const std::vector<int>& s,
+                 const std::vector<QR::internal::Alignment_pair>& pairs = {})
+{
+  double align = 0;
+  for(const auto& ap : pairs) align += 0.5 * misalignment(pb, ap, s);
   double iso = 0, quad = 0, poly = 0;
   const auto used = used_arcs(pb);
   for(std::size_t a = 0; a < pb.arcs.size(); ++a) if(used[a]) iso += (s[a] - pb.arcs[a].target) * (s[a] - pb.arcs[a].target);
@@ -95,10 +126,10 @@ double objective(const Side_quantization_problem& pb, const std::vector<int>& s)
     if(n == 6 && (e[0] + e[2] + e[4]) % 2) viol += 1;
     poly += viol / n;
   }
-  return iso + 99 * quad + 91 * poly;
+  return iso + 99 * quad + 91 * poly + 9 * align;
 }
 
-double brute_force(const Side_quantization_problem& pb)
+double brute_force(const Side_quantization_problem& pb, const std::vector<QR::internal::Alignment_pair>& pairs = {})
 {
   const std::size_t na = pb.arcs.size();
   std::vector<int> s(na), lo(na), hi(na);
@@ -109,7 +140,7 @@ double brute_force(const Side_quantization_problem& pb)
   }
   double best = 1e300;
   std::function<void(std::size_t)> rec = [&](std::size_t a) {
-    if(a == na) { if(odd_or_small(pb, s) == 0) best = std::min(best, objective(pb, s)); return; }
+    if(a == na) { if(odd_or_small(pb, s) == 0) best = std::min(best, objective(pb, s, pairs)); return; }
     for(int x = lo[a]; x <= hi[a]; ++x) { s[a] = x; rec(a + 1); }
   };
   rec(0);
@@ -174,18 +205,113 @@ BOOST_AUTO_TEST_CASE(t_junction_case)
 BOOST_AUTO_TEST_CASE(small_random_problems_match_brute_force)
 {
   std::mt19937 rng(7);
-  int checked = 0;
+  int checked = 0, with_pairs = 0;
   for(int k = 0; k < 40 && checked < 12; ++k) {
     auto pb = make_grid(2, 1, rng, true, 0.5, 0.4);
     if(pb.arcs.size() > 7) continue;
     std::vector<int> s;
     const auto st = QR::quantize_patch_sides(pb, s);
+    const auto pairs = QR::internal::alignment_pairs(QR::internal::make_view(pb));
     BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
-    BOOST_CHECK_CLOSE(st.objective, objective(pb, s), 1e-6);
-    BOOST_CHECK_CLOSE(st.objective + 1., brute_force(pb) + 1., 1e-6);
+    if(st.dropped_pairs == 0) {
+      // one solve: the optimum of the whole objective, alignment included
+      BOOST_CHECK_CLOSE(st.objective, objective(pb, s, pairs), 1e-6);
+      BOOST_CHECK_CLOSE(st.objective + 1., brute_force(pb, pairs) + 1., 1e-6);
+    }
+    std::vector<int> s0;
+    const auto st0 = QR::quantize_patch_sides(pb, s0, P::alignment_weight(0.));
+    BOOST_CHECK_CLOSE(st0.objective, objective(pb, s0), 1e-6);
+    BOOST_CHECK_CLOSE(st0.objective + 1., brute_force(pb) + 1., 1e-6);
+    with_pairs += !pairs.empty();
     ++checked;
   }
   BOOST_CHECK_GE(checked, 5);
+  BOOST_TEST_MESSAGE("  " << with_pairs << " of " << checked << " problems have an alignment pair");
+}
+
+// Two triangles sharing arc 0 (4 edges wanted). A (sides 0, 1, 2) has targets 3 and 3: its separatrix
+// lands in the middle of arc 0. B (sides 0, 3, 4) wants 2.4 and 3.6: rounded (2, 4) its separatrix lands
+// one edge off A's. Aligned, B takes (3, 3) for 0.4 more isometry; misaligned costs 9 * (2 + 2) / 2.
+BOOST_AUTO_TEST_CASE(alignment_puts_facing_singularities_on_one_line)
+{
+  Side_quantization_problem pb;
+  pb.arcs = {{4.}, {3.}, {3.}, {2.4}, {3.6}};
+  pb.patches = {{{0}, {1}, {2}}, {{0}, {3}, {4}}};
+  const auto pairs = QR::internal::alignment_pairs(QR::internal::make_view(pb));
+  BOOST_REQUIRE_EQUAL(pairs.size(), 1u);
+  BOOST_CHECK(pairs[0].p == 0 && pairs[0].i == 0 && pairs[0].q == 1 && pairs[0].j == 0);
+  std::vector<int> s, s0, sf;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK((s == std::vector<int>{4, 3, 3, 3, 3}));
+  BOOST_CHECK_EQUAL(st.alignment_pairs, 1u);
+  BOOST_CHECK_EQUAL(st.aligned_pairs, 1u);
+  BOOST_CHECK_EQUAL(st.dropped_pairs, 0u);
+  BOOST_CHECK_CLOSE(st.objective, brute_force(pb, pairs), 1e-6);
+  BOOST_CHECK_CLOSE(st.objective, 0.72, 1e-6);
+  const auto st0 = QR::quantize_patch_sides(pb, s0, P::alignment_weight(0.));
+  BOOST_CHECK((s0 == std::vector<int>{4, 3, 3, 2, 4}));
+  BOOST_CHECK_EQUAL(st0.alignment_pairs, 0u);
+  BOOST_CHECK_EQUAL(misalignment(pb, pairs[0], s0), 4);
+  // the fallback's local search sees the alignment term too
+  QR::quantize_patch_sides(pb, sf, P::use_mip_solver(false));
+  BOOST_CHECK_EQUAL(misalignment(pb, pairs[0], sf), 0);
+}
+
+// A pentagon and a triangle facing each other through a strip of two quads; a T-junction on the strip
+// (one quad side made of two arcs) or a boundary stops the chain.
+BOOST_AUTO_TEST_CASE(alignment_pairs_through_quad_strips)
+{
+  // arcs: 0 T|Q1, 1 Q1|Q2, 2 Q2|P; triangle T = (0, 3, 4); quads Q1 = (0, 5, 1, 6), Q2 = (1, 7, 2, 8);
+  // pentagon P = (2, 9, 10, 11, 12).
+  Side_quantization_problem pb;
+  pb.arcs.assign(13, Side_quantization_problem::Arc());
+  for(auto& a : pb.arcs) a.target = 3.;
+  pb.patches = {{{0}, {3}, {4}}, {{0}, {5}, {1}, {6}}, {{1}, {7}, {2}, {8}}, {{2}, {9}, {10}, {11}, {12}}};
+  auto pairs = QR::internal::alignment_pairs(QR::internal::make_view(pb));
+  BOOST_REQUIRE_EQUAL(pairs.size(), 1u);
+  BOOST_CHECK(pairs[0].p == 0 && pairs[0].i == 0 && pairs[0].q == 3 && pairs[0].j == 0);
+  // Solved with fractional targets: aligned, and the optimum of the whole objective.
+  pb.arcs[3].target = 2.6; pb.arcs[4].target = 3.7; pb.arcs[9].target = 2.2; pb.arcs[12].target = 3.4;
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_CHECK_EQUAL(misalignment(pb, pairs[0], s), 0);
+  BOOST_CHECK_CLOSE(st.objective, objective(pb, s, pairs), 1e-6);
+  // Q2's side towards P split in two arcs (a T-junction): no pair.
+  Side_quantization_problem t = pb;
+  t.arcs.push_back(Side_quantization_problem::Arc());
+  t.patches[2][2] = {2, 13};
+  t.patches[3] = {{13, 2}, {9}, {10}, {11}, {12}};
+  BOOST_CHECK(QR::internal::alignment_pairs(QR::internal::make_view(t)).empty());
+  // Q1 without its neighbour Q2 (arc 1 on the boundary): no pair either.
+  Side_quantization_problem b = pb;
+  b.patches.erase(b.patches.begin() + 2);
+  BOOST_CHECK(QR::internal::alignment_pairs(QR::internal::make_view(b)).empty());
+}
+
+// A pair that fixed arcs keep misaligned is dropped after the first solve; the second solve then
+// optimises the other terms alone and the reported objective is the independent one without the pair.
+BOOST_AUTO_TEST_CASE(unmet_alignment_is_dropped_in_the_second_solve)
+{
+  Side_quantization_problem pb;
+  pb.arcs = {{4.}, {3., 3}, {3., 3}, {2., 2}, {4., 4}, {3.3}, {3.3}};
+  // Triangles A = (0, 1, 2) and B = (0, 3, 4) share arc 0, with B's other arcs fixed so that its
+  // separatrix is one edge off A's whatever arc 0 is; triangle C = (2, 5, 6) shares arc 2 with A and
+  // can be aligned with it.
+  pb.patches = {{{0}, {1}, {2}}, {{0}, {3}, {4}}, {{2}, {5}, {6}}};
+  const auto pairs = QR::internal::alignment_pairs(QR::internal::make_view(pb));
+  BOOST_REQUIRE_EQUAL(pairs.size(), 2u);
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_CHECK_EQUAL(st.alignment_pairs, 2u);
+  BOOST_CHECK_EQUAL(st.dropped_pairs, 1u);
+  BOOST_CHECK_EQUAL(st.aligned_pairs, 1u);
+  std::vector<QR::internal::Alignment_pair> kept;
+  for(const auto& ap : pairs) if(misalignment(pb, ap, s) == 0) kept.push_back(ap);
+  BOOST_REQUIRE_EQUAL(kept.size(), 1u);
+  BOOST_CHECK_CLOSE(st.objective, objective(pb, s, kept), 1e-6);
+  BOOST_CHECK_CLOSE(st.objective + 1., brute_force(pb, kept) + 1., 1e-6);
 }
 
 BOOST_AUTO_TEST_CASE(parity_on_generated_layouts_solver_fallback_threads)

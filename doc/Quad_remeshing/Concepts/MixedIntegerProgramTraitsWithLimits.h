@@ -5,7 +5,10 @@
 A refinement of `MixedIntegerProgramTraits` for solves that must end in bounded time and say
 honestly what they found. CGAL's concept has no time limit, reports a time-out or a solver failure
 like infeasibility, and cannot be copied (create one object per program, pass it by reference).
-`quantize_patch_sides()` creates one default-constructed object per cluster and uses it once.
+`quantize_patch_sides()` creates one default-constructed object per cluster solve and uses it once.
+If the model has a static member function `release_thread_resources()` (optional), each of its worker
+threads calls it once when it has finished all its solves (the GLPK model frees GLPK's per-thread
+environment there).
 
 \cgalRefines{MixedIntegerProgramTraits}
 

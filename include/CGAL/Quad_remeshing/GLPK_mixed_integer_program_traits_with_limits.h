@@ -88,6 +88,9 @@ public:
   std::size_t nodes() const { return nodes_; }
   /// The largest bound or constraint violation of the returned solution.
   double max_residual() const { return max_residual_; }
+  /// Frees GLPK's environment of the calling thread (`glp_free_env()`). A worker thread calls it once
+  /// it has finished all its solves; never while a program of that thread is being solved.
+  static void release_thread_resources() { glp_free_env(); }
 
   /// Solves the program; returns `true` if a feasible solution (optimal or at a limit) is available
   /// through `solution()`.
@@ -220,7 +223,7 @@ private:
   static void sorted_row(const Expr* e, std::vector<std::pair<int, double> >& row)
   {
     row.clear();
-    for(const auto& kv : e->coefficients()) row.emplace_back(kv.first->index(), kv.second);
+    for(const auto& kv : e->coefficients()) if(kv.second != 0) row.emplace_back(kv.first->index(), kv.second);
     std::sort(row.begin(), row.end());
   }
 

@@ -30,6 +30,7 @@
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(isometry_weight_t, isometry_weight, isometry_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(quad_regularity_weight_t, quad_regularity_weight, quad_regularity_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(polygon_regularity_weight_t, polygon_regularity_weight, polygon_regularity_weight)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(alignment_weight_t, alignment_weight, alignment_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(maximum_cluster_size_t, maximum_cluster_size, maximum_cluster_size)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(relative_mip_gap_t, relative_mip_gap, relative_mip_gap)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(maximum_number_of_nodes_t, maximum_number_of_nodes, maximum_number_of_nodes)
@@ -48,7 +49,11 @@ struct Side_quantization_statistics
   double isometry = 0;                 ///< sum over arcs of (s - target)^2
   double quad_regularity = 0;          ///< sum over quads of |e0 - e2| + |e1 - e3|
   double polygon_regularity = 0;       ///< sum over 3/5/6-gons of the violations of Tarini's inequalities / n (+ hexagon parity)
-  double objective = 0;                ///< weighted total of the three terms above
+  double alignment = 0;                ///< sum over the facing side pairs kept by the second solve of (|up - down'| + |down - up'|) / 2
+  double objective = 0;                ///< weighted total of the four terms above
+  std::size_t alignment_pairs = 0;     ///< facing sides of non-quad patches (see quantize_patch_sides())
+  std::size_t aligned_pairs = 0;       ///< of those, the ones whose singularities are aligned in the result
+  std::size_t dropped_pairs = 0;       ///< pairs left out of the second solve because the first could not align them
   std::vector<std::string> status;     ///< per cluster: optimal, feasible_at_limit, ..., or "fallback"
   std::size_t fallback_clusters = 0;   ///< clusters whose values come from the solver-free fallback
   std::size_t simple_patches = 0;      ///< patches admitting Tarini's simple (one-singularity) pattern
@@ -66,12 +71,16 @@ struct Side_quantization_statistics
     o["isometry"] = isometry;
     o["quad_regularity"] = quad_regularity;
     o["polygon_regularity"] = polygon_regularity;
+    o["alignment"] = alignment;
     o["total"] = objective;
     r["objective"] = o;
     Report st = Report::array();
     for(const auto& s : status) st.push_back(s);
     r["status"] = st;
     r["fallback_clusters"] = fallback_clusters;
+    r["alignment_pairs"] = alignment_pairs;
+    r["aligned_pairs"] = aligned_pairs;
+    r["dropped_pairs"] = dropped_pairs;
     r["simple_patches"] = simple_patches;
     r["odd_perimeters"] = odd_perimeters;
     r["seconds"] = seconds;
@@ -93,6 +102,13 @@ typedef internal::No_mip_traits Default_mip_traits;
 #endif
 
 namespace internal {
+
+// Calls T::release_thread_resources() where the traits have it (the GLPK model: its per-thread
+// environment), at the end of a worker thread.
+template <typename T>
+auto release_thread_resources(int) -> decltype(T::release_thread_resources(), void()) { T::release_thread_resources(); }
+template <typename T>
+void release_thread_resources(long) {}
 
 // Connected clusters of at most max_size patches: breadth-first growth in ascending patch order.
 inline std::vector<std::vector<std::size_t> > make_clusters(const Quantization_view& v, std::size_t max_size)
@@ -119,12 +135,17 @@ inline std::vector<std::vector<std::size_t> > make_clusters(const Quantization_v
   return clusters;
 }
 
+// The terms of the objective at s; the alignment term sums over `pairs`, and aligned_pairs counts
+// the aligned ones among `all_pairs`.
 inline void evaluate(const Quantization_view& v, const std::vector<int>& s, const Quantization_weights& w,
-                     Side_quantization_statistics& st)
+                     Side_quantization_statistics& st, const std::vector<Alignment_pair>& pairs = {},
+                     const std::vector<Alignment_pair>& all_pairs = {})
 {
   const auto& pb = *v.problem;
-  st.isometry = st.quad_regularity = st.polygon_regularity = 0;
-  st.simple_patches = st.odd_perimeters = 0;
+  st.isometry = st.quad_regularity = st.polygon_regularity = st.alignment = 0;
+  st.simple_patches = st.odd_perimeters = st.aligned_pairs = 0;
+  for(const Alignment_pair& ap : pairs) st.alignment += 0.5 * alignment_violation(v, ap, s);
+  for(const Alignment_pair& ap : all_pairs) if(alignment_violation(v, ap, s) == 0) ++st.aligned_pairs;
   for(std::size_t a = 0; a < pb.arcs.size(); ++a) {
     if(v.problem->arcs[a].fixed > 0 || v.arc_patches[a].empty()) continue;
     const double d = s[a] - pb.arcs[a].target;
@@ -137,7 +158,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
     else st.polygon_regularity += patch_violation(v, p, s);
   }
   st.objective = w.isometry * st.isometry + w.regularity_quads * st.quad_regularity +
-                 w.regularity_others * st.polygon_regularity;
+                 w.regularity_others * st.polygon_regularity + w.alignment * st.alignment;
 }
 
 } // namespace internal
@@ -164,7 +185,17 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   (through opposite sides), keep every parity, and are taken when they lower the objective; it is
   deterministic. The result always has every `s >= 1` and every perimeter even and `>= 4`.
 
-  Singularity alignment (the paper's fourth term) is not modelled yet.
+  `+ w_align * sum_pairs (|up_p - down_q| + |down_p - up_q|) / 2`, the singularity alignment of the
+  paper: a pair is a side of a 3, 5 or 6-sided patch `p` and one of another such patch `q` that face
+  each other across one arc, directly or through a chain of 4-sided patches entered and left through
+  opposite sides (every side on the way one arc: T-junctions, boundaries and slits stop the chain);
+  `up` and `down` are twice the two sub-sides into which the separatrix of Tarini's one-singularity
+  pattern cuts the side (`2 s_{i-1}` and `2 s_{i+1}`), so a zero term puts both singular vertices on
+  one line of quad edges. Pairs are modelled when both patches are in one cluster. After a cluster's
+  first solve, the pairs it left unaligned are dropped and the cluster is solved a second time,
+  starting from the first solution, with a quarter of the node limit (and, with a time limit, in the
+  time the first solve left); the final
+  local search and the reported `alignment` term use the pairs kept.
 
   @tparam MIPTraits a model of `MixedIntegerProgramTraitsWithLimits`, default-constructible;
           `GLPK_mixed_integer_program_traits_with_limits<double>` when `CGAL_USE_GLPK` is defined,
@@ -194,6 +225,11 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
       \cgalParamDescription{weight of the violations of Tarini's conditions on 3, 5 and 6-sided patches}
       \cgalParamType{`double`}
       \cgalParamDefault{91}
+    \cgalParamNEnd
+    \cgalParamNBegin{alignment_weight}
+      \cgalParamDescription{weight of the singularity alignment terms (0: not modelled, one solve per cluster)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{9}
     \cgalParamNEnd
     \cgalParamNBegin{maximum_cluster_size}
       \cgalParamDescription{maximal number of patches solved in one program}
@@ -251,17 +287,21 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   w.isometry = choose_parameter(get_parameter(np, internal_np::isometry_weight), 1.);
   w.regularity_quads = choose_parameter(get_parameter(np, internal_np::quad_regularity_weight), 99.);
   w.regularity_others = choose_parameter(get_parameter(np, internal_np::polygon_regularity_weight), 91.);
+  w.alignment = choose_parameter(get_parameter(np, internal_np::alignment_weight), 9.);
   const std::size_t max_cluster = choose_parameter(get_parameter(np, internal_np::maximum_cluster_size), std::size_t(300));
   // a node limit by default, not a time limit: the same input gives the same output whatever the load
   const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   const std::size_t node_limit =
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_nodes), std::size_t(500));
   const double gap = choose_parameter(get_parameter(np, internal_np::relative_mip_gap), 1e-4);
+  // The second solve (alignment terms the first left unmet dropped) starts from the first solution and
+  // only has to undo what those terms pulled: a quarter of the node budget.
+  const std::size_t second_node_limit = node_limit == 0 ? 0 : (std::max)(std::size_t(1), node_limit / 4);
   const bool use_solver = choose_parameter(get_parameter(np, internal_np::use_mip_solver), true);
   const unsigned threads = (std::max)(1u, static_cast<unsigned>(
                              choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u)));
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  if(!(w.isometry >= 0) || !(w.regularity_quads >= 0) || !(w.regularity_others >= 0))
+  if(!(w.isometry >= 0) || !(w.regularity_quads >= 0) || !(w.regularity_others >= 0) || !(w.alignment >= 0))
     throw std::invalid_argument("quantize_patch_sides: weights must be >= 0");
   if(max_cluster == 0) throw std::invalid_argument("quantize_patch_sides: maximum_cluster_size must be > 0");
 
@@ -282,10 +322,33 @@ quantize_patch_sides(const Side_quantization_problem& problem,
         v.fixed[a] = (std::max)(2, 2 * static_cast<int>(std::lround(problem.arcs[a].target / 2.)));
     }
   }
+  // Facing sides of non-quad patches; a pair is modelled in the program of a cluster holding both.
+  const std::vector<internal::Alignment_pair> all_pairs =
+    w.alignment > 0 ? internal::alignment_pairs(v) : std::vector<internal::Alignment_pair>();
+  std::vector<char> kept(all_pairs.size(), 1);
+  std::vector<std::vector<std::size_t> > cluster_pairs(clusters.size());
+  {
+    std::vector<long> cluster_of(problem.patches.size());
+    for(std::size_t c = 0; c < clusters.size(); ++c) for(std::size_t p : clusters[c]) cluster_of[p] = long(c);
+    for(std::size_t k = 0; k < all_pairs.size(); ++k)
+      if(cluster_of[all_pairs[k].p] == cluster_of[all_pairs[k].q])
+        cluster_pairs[std::size_t(cluster_of[all_pairs[k].p])].push_back(k);
+  }
+  auto kept_pairs = [&](const std::vector<std::size_t>& ids) {
+    std::vector<internal::Alignment_pair> out;
+    for(std::size_t k : ids) if(kept[k]) out.push_back(all_pairs[k]);
+    return out;
+  };
+  auto all_kept_pairs = [&]() {
+    std::vector<internal::Alignment_pair> out;
+    for(std::size_t k = 0; k < all_pairs.size(); ++k) if(kept[k]) out.push_back(all_pairs[k]);
+    return out;
+  };
+
   // The fallback gives every arc a value first; a successful solve overwrites its cluster's free arcs.
   internal::fallback_assignment(v, s);
   // Improved by strip moves (clusters kept apart): a better first incumbent of every solve.
-  internal::improve_locally(v, s, w);
+  internal::improve_locally(v, s, w, all_pairs);
 
   std::vector<internal::Cluster_result> results(clusters.size());
   if constexpr(!std::is_same<MIPTraits, internal::No_mip_traits>::value) if(use_solver) {
@@ -295,16 +358,33 @@ quantize_patch_sides(const Side_quantization_problem& problem,
     auto work = [&]() {
       for(std::size_t c; (c = next++) < clusters.size();) {
         try {
+          const auto start = std::chrono::steady_clock::now();
           MIPTraits mip;
           local[c] = s;
-          results[c] = internal::solve_cluster(v, clusters[c], w, time_limit, node_limit, gap, local[c], mip);
+          results[c] = internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w, time_limit,
+                                               node_limit, gap, local[c], mip);
+          // Second solve without the alignment terms the first could not meet (they only pull the
+          // other terms away), started from the first solution.
+          if(!results[c].solved) continue;
+          bool dropped = false;
+          for(std::size_t k : cluster_pairs[c])
+            if(internal::alignment_violation(v, all_pairs[k], local[c]) != 0) { kept[k] = 0; dropped = true; }
+          const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          if(!dropped || (time_limit > 0 && spent >= time_limit)) continue;
+          MIPTraits mip2;
+          std::vector<int> second = local[c];
+          const internal::Cluster_result r2 =
+            internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w,
+                                    time_limit > 0 ? time_limit - spent : 0., second_node_limit, gap, second, mip2);
+          if(r2.solved) { local[c] = second; results[c].status = r2.status; }
         } catch(...) { results[c] = internal::Cluster_result(); }
       }
     };
     if(threads == 1 || clusters.size() == 1) work();
     else {
       std::vector<std::thread> pool;
-      for(unsigned i = 0; i < (std::min<std::size_t>)(threads, clusters.size()); ++i) pool.emplace_back(work);
+      for(unsigned i = 0; i < (std::min<std::size_t>)(threads, clusters.size()); ++i)
+        pool.emplace_back([&]() { work(); internal::release_thread_resources<MIPTraits>(0); });
       for(auto& t : pool) t.join();
     }
     // Clusters share no free arc, so the merge order does not matter.
@@ -318,7 +398,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
     // Strip moves over the whole layout: they also cross the arcs fixed between clusters.
     internal::Quantization_view whole = v;
     for(std::size_t a = 0; a < problem.arcs.size(); ++a) whole.fixed[a] = problem.arcs[a].fixed;
-    internal::improve_locally(whole, s, w);
+    internal::improve_locally(whole, s, w, all_kept_pairs());
   }
   for(std::size_t c = 0; c < clusters.size(); ++c) {
     st.variables += results[c].variables;
@@ -330,7 +410,9 @@ quantize_patch_sides(const Side_quantization_problem& problem,
                                                 : std::string("fallback (") + to_string(Mip_status(results[c].status)) + ")");
     }
   }
-  internal::evaluate(v, s, w, st);
+  internal::evaluate(v, s, w, st, all_kept_pairs(), all_pairs);
+  st.alignment_pairs = all_pairs.size();
+  st.dropped_pairs = std::size_t(std::count(kept.begin(), kept.end(), char(0)));
   if(st.odd_perimeters != 0) throw std::logic_error("quantize_patch_sides: odd perimeter left (bug)");
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if(verbose)

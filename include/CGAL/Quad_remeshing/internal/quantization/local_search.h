@@ -32,12 +32,18 @@ inline double patch_regularity_cost(const Quantization_view& v, std::size_t p, c
 // opposite-side differences of the quads they cross; a half strip (one direction only) with delta +-2
 // changes the one quad or polygon it starts from and keeps every parity. A move is taken if it lowers
 // the objective and leaves every parity even. Sweeps the arcs in id order until no move improves or
-// max_sweeps is reached. Returns the objective decrease.
+// max_sweeps is reached. The objective includes the alignment terms of `pairs`. Returns the
+// objective decrease.
 inline double improve_locally(const Quantization_view& v, std::vector<int>& s, const Quantization_weights& w,
-                              std::size_t max_sweeps = 100)
+                              const std::vector<Alignment_pair>& pairs = {}, std::size_t max_sweeps = 100)
 {
   const auto& pb = *v.problem;
   const std::size_t na = pb.arcs.size(), np = pb.patches.size();
+  std::vector<std::vector<std::size_t> > pairs_of(np);
+  if(w.alignment > 0)
+    for(std::size_t k = 0; k < pairs.size(); ++k) { pairs_of[pairs[k].p].push_back(k); pairs_of[pairs[k].q].push_back(k); }
+  std::vector<char> pair_seen(pairs.size(), 0);
+  std::vector<std::size_t> touched_pairs;
   // side_of[p] lists (arc, side index) pairs of patch p
   std::vector<std::vector<std::pair<std::size_t, std::size_t> > > side_of(np);
   for(std::size_t p = 0; p < np; ++p)
@@ -79,11 +85,20 @@ inline double improve_locally(const Quantization_view& v, std::vector<int>& s, c
     patches.clear();
     for(std::size_t a : arcs)
       for(std::size_t p : v.arc_patches[a]) if(!touched[p]) { touched[p] = 1; patches.push_back(p); }
-    double before = 0, after = 0;
+    touched_pairs.clear();
+    for(std::size_t p : patches)
+      for(std::size_t k : pairs_of[p]) if(!pair_seen[k]) { pair_seen[k] = 1; touched_pairs.push_back(k); }
+    auto alignment = [&]() {
+      double c = 0;
+      for(std::size_t k : touched_pairs) c += 0.5 * w.alignment * alignment_violation(v, pairs[k], s);
+      return c;
+    };
+    double before = alignment(), after = 0;
     for(std::size_t a : arcs) before += iso(a, s[a]);
     for(std::size_t p : patches) before += patch_regularity_cost(v, p, s, w);
     for(std::size_t a : arcs) s[a] += delta;
     bool ok = true;
+    after += alignment();
     for(std::size_t a : arcs) after += iso(a, s[a]);
     for(std::size_t p : patches) {
       const long per = perimeter(v, p, s);
@@ -91,6 +106,7 @@ inline double improve_locally(const Quantization_view& v, std::vector<int>& s, c
       after += patch_regularity_cost(v, p, s, w);
     }
     for(std::size_t p : patches) touched[p] = 0;
+    for(std::size_t k : touched_pairs) pair_seen[k] = 0;
     if(ok && after < before - 1e-9) return before - after;
     for(std::size_t a : arcs) s[a] -= delta;
     return 0;

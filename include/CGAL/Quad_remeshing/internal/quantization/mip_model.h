@@ -14,7 +14,7 @@ namespace CGAL {
 namespace Quad_remeshing {
 namespace internal {
 
-struct Quantization_weights { double isometry = 1, regularity_quads = 99, regularity_others = 91; };
+struct Quantization_weights { double isometry = 1, regularity_quads = 99, regularity_others = 91, alignment = 9; };
 
 struct Cluster_result
 {
@@ -34,9 +34,11 @@ inline void arc_window(double t, int& lo, int& hi)
 }
 
 // Builds and solves the program of one cluster (its patches; arcs not in the cluster are fixed in
-// v.fixed) and writes the values of its free arcs into s. The traits object is used once.
+// v.fixed) and writes the values of its free arcs into s. `pairs` are the alignment terms of the
+// program (both patches in the cluster). The traits object is used once.
 template <typename MIP>
 Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::size_t>& patches,
+                             const std::vector<Alignment_pair>& pairs,
                              const Quantization_weights& w, double time_limit, std::size_t node_limit,
                              double gap, std::vector<int>& s, MIP& mip)
 {
@@ -145,6 +147,31 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
       }
     }
   }
+  // Alignment: d >= |up_p - down_q| and d' >= |down_p - up_q|, each weighted w.alignment / 2.
+  auto add_form = [&](Constraint* c, std::size_t p, const std::vector<int>& r, double sign, double& constant) {
+    for(std::size_t k = 0; k < r.size(); ++k) if(r[k] != 0) add_side(c, p, k, sign * r[k], constant);
+  };
+  if(w.alignment > 0)
+    for(const Alignment_pair& ap : pairs) {
+      std::vector<int> up_p, down_p, up_q, down_q;
+      sub_side_rows(pb.patches[ap.p].size(), ap.i, up_p, down_p);
+      sub_side_rows(pb.patches[ap.q].size(), ap.j, up_q, down_q);
+      const std::vector<int>* forms[2][2] = {{&up_p, &down_q}, {&down_p, &up_q}};
+      for(const auto& f : forms) {
+        Variable* d = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
+        obj->add_coefficient(d, 0.5 * w.alignment);
+        start(d, std::abs(double(dot_sides(v, ap.p, *f[0], s) - dot_sides(v, ap.q, *f[1], s))));
+        for(double sign : {1., -1.}) {
+          // d - sign (form_p - form_q) >= 0
+          Constraint* c = mip.create_constraint(0, Variable::infinity());
+          double constant = 0;
+          c->add_coefficient(d, 1.);
+          add_form(c, ap.p, *f[0], -sign, constant);
+          add_form(c, ap.q, *f[1], sign, constant);
+          c->set_bounds(-constant, Variable::infinity());
+        }
+      }
+    }
   res.variables = mip.number_of_variables();
   res.constraints = mip.number_of_constraints();
   if(x0_valid) { x0.resize(mip.number_of_variables(), 0.); mip.set_initial_solution(x0); }

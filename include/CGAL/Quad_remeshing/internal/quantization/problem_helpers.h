@@ -149,6 +149,87 @@ inline double patch_violation(const Quantization_view& v, std::size_t p, const s
   return viol / double(n);
 }
 
+// Two sides of non-quad patches (3, 5 or 6 sides) that face each other: side i of patch p and side j
+// of patch q are both one arc, and that arc is shared, directly or through a chain of 4-sided
+// patches entered and left through opposite sides that are one arc each (a T-junction, a boundary,
+// a side bounding its patch twice or a loop ends the chain). With one singular vertex per patch
+// (Tarini's simple pattern), their separatrices meet the shared line at the same point exactly when
+// the sub-sides of p's side equal those of q's side in reverse order (see alignment_violation()).
+struct Alignment_pair { std::size_t p, i, q, j; };
+
+// The side index of patch q that arc a forms alone, or -1 (a is on no side of q, on several, or
+// shares its side with other arcs).
+inline long single_arc_side(const Quantization_view& v, std::size_t q, std::size_t a)
+{
+  long side = -1; int seen = 0;
+  const auto& sides = v.problem->patches[q];
+  for(std::size_t k = 0; k < sides.size(); ++k)
+    for(std::size_t b : sides[k]) if(b == a) { ++seen; side = long(k); }
+  if(seen != 1 || sides[std::size_t(side)].size() != 1) return -1;
+  return side;
+}
+
+// Every facing pair once (p < q, or p == q never), in ascending (p, i) order: deterministic.
+inline std::vector<Alignment_pair> alignment_pairs(const Quantization_view& v)
+{
+  const auto& pb = *v.problem;
+  const std::size_t np = pb.patches.size();
+  std::vector<Alignment_pair> pairs;
+  for(std::size_t p = 0; p < np; ++p) {
+    if(pb.patches[p].size() == 4) continue;
+    for(std::size_t i = 0; i < pb.patches[p].size(); ++i) {
+      if(pb.patches[p][i].size() != 1) continue;
+      std::size_t arc = pb.patches[p][i][0], from = p;
+      if(single_arc_side(v, p, arc) != long(i)) continue;
+      for(std::size_t steps = 0; steps <= np; ++steps) {
+        const auto& inc = v.arc_patches[arc];
+        if(inc.size() != 2 || inc[0] == inc[1]) break;
+        const std::size_t q = inc[0] == from ? inc[1] : inc[0];
+        if(q == p) break;
+        const long k = single_arc_side(v, q, arc);
+        if(k < 0) break;
+        if(pb.patches[q].size() != 4) {
+          if(p < q) pairs.push_back(Alignment_pair{p, i, q, std::size_t(k)});
+          break;
+        }
+        const auto& opposite = pb.patches[q][(std::size_t(k) + 2) % 4];
+        if(opposite.size() != 1 || single_arc_side(v, q, opposite[0]) < 0) break;
+        arc = opposite[0]; from = q;
+      }
+    }
+  }
+  return pairs;
+}
+
+// Twice the sub-sides of side i of a 3, 5 or 6-sided patch with side counts e, as linear forms in e:
+// `up` (from the side's start corner to its separatrix) is 2 s_{i-1}, `down` (from the separatrix to
+// its end corner) is 2 s_{i+1}, with 2 s_k the k-th row of tarini_rows().
+inline void sub_side_rows(std::size_t n, std::size_t i, std::vector<int>& up, std::vector<int>& down)
+{
+  const auto rows = tarini_rows(n);
+  up = rows[(i + n - 1) % n];
+  down = rows[(i + 1) % n];
+}
+
+inline int dot_sides(const Quantization_view& v, std::size_t p, const std::vector<int>& r, const std::vector<int>& s)
+{
+  int x = 0;
+  for(std::size_t k = 0; k < r.size(); ++k) if(r[k] != 0) x += r[k] * side_count(v, p, k, s);
+  return x;
+}
+
+// |up_p - down_q| + |down_p - up_q|: 0 when the two singular vertices lie on one line of quad edges
+// (the shared line is walked in opposite directions by the two patches, and each quad patch on the way
+// keeps the position measured from the corresponding corner).
+inline int alignment_violation(const Quantization_view& v, const Alignment_pair& a, const std::vector<int>& s)
+{
+  std::vector<int> up_p, down_p, up_q, down_q;
+  sub_side_rows(v.problem->patches[a.p].size(), a.i, up_p, down_p);
+  sub_side_rows(v.problem->patches[a.q].size(), a.j, up_q, down_q);
+  return std::abs(dot_sides(v, a.p, up_p, s) - dot_sides(v, a.q, down_q, s)) +
+         std::abs(dot_sides(v, a.p, down_p, s) - dot_sides(v, a.q, up_q, s));
+}
+
 // Whether Tarini's simple strategy applies to patch p with counts s (n = 4: opposite sides equal).
 inline bool is_simple_patch(const Quantization_view& v, std::size_t p, const std::vector<int>& s)
 {
