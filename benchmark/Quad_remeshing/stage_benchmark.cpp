@@ -197,6 +197,8 @@ public:
 
   int run()
   {
+    measure("remesh_fandisk", 2., [&](Result& r) { remesh_stage("fandisk", r); });
+    measure("remesh_abc_00000006", 6., [&](Result& r) { remesh_stage("abc_00000006", r); });
     measure("cross_field_40k", 1., [&](Result& r) { cross_field_40k(r); });
     measure("direction_graph_1000_traces_fandisk", 2., [&](Result& r) { direction_graph(r); });
     measure("layout_fandisk", 3., [&](Result& r) { r.set(trace_stage(prepared("fandisk"), opt_.verbose)); r.details = prepared("fandisk").figures["layout"]; });
@@ -259,6 +261,17 @@ private:
     Prepared& p = prepared(name);
     if(!p.layout) trace_stage(p, opt_.verbose);
     return p;
+  }
+
+  // #3: reading, repair, features and remeshing at the default density (quad_remesh --until remesh
+  // without writing the result)
+  void remesh_stage(const std::string& name, Result& r)
+  {
+    auto p = std::make_unique<Prepared>();
+    const Stopwatch t;
+    read_and_remesh(mesh_path(name), 0., opt_.verbose, *p);
+    r.set(t.time());
+    r.details = p->figures;
   }
 
   // #4: the cross field of fandisk remeshed to about 40 000 triangles (one correction of the length if the
@@ -418,6 +431,7 @@ void usage(std::ostream& os)
   os << "usage: stage_benchmark [--data DIR] [--only TEXT] [--threads N] [--all-meshes DIR] [--json FILE]\n"
         "                       [--strict] [--verbose] [--help]\n"
         "Times the stages against the issues' targets; one line per measurement: name, seconds, target, PASS|FAIL.\n"
+        "  remesh_fandisk, remesh_abc_00000006  read_and_repair + detect_feature_edges + remesh_for_quadrangulation (< 2 s, < 6 s)\n"
         "  cross_field_40k                      compute_cross_field + singularities, fandisk remeshed to ~40k faces (< 1 s)\n"
         "  direction_graph_1000_traces_fandisk  layout of the feature paths, G, 1000 traces, real field (< 2 s)\n"
         "  layout_fandisk, layout_abc_00000006  Patch_layout + trace_patch_layout (< 3 s, < 10 s)\n"

@@ -349,7 +349,7 @@ private:
     const QR::Remeshing_statistics st = QR::remesh_for_quadrangulation(
       state_.tmesh, state_.feature,
       QRP::combine(QRP::quad_edge_length(state_.quad_edge_length).verbose(opt_.verbose),
-                   QRP::adaptive_remeshing(opt_.adaptive_remeshing),
+                   QRP::adaptive_remeshing(opt_.adaptive_remeshing), QRP::feature_angle(opt_.feature_angle),
                    QRP::vertex_is_feature_corner_map(state_.corner)));
     // later stages index elements densely: drop the removed ones (property maps are compacted with them)
     state_.tmesh.collect_garbage();

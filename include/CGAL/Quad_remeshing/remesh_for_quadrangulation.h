@@ -14,6 +14,7 @@
 #include <CGAL/Quad_remeshing/internal/remeshing/adaptive_remeshing.h>
 #include <CGAL/Quad_remeshing/internal/remeshing/remeshing_helpers.h>
 
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -57,6 +58,8 @@ struct Remeshing_statistics
   double seconds_uniform = 0., seconds_adaptive = 0., seconds_split = 0., seconds = 0.;
   std::size_t faces_uniform = 0;         ///< faces after the uniform pass
   std::size_t adaptive_rounds = 0;       ///< sizing-field refinements of the adaptive pass
+  std::size_t restored_vertices = 0;     ///< vertices the adaptive pass inserted to put constraint lines back on the input lines
+  std::size_t sharp_edges_held = 0;      ///< input sharp edges that are not features, held in place by the adaptive setting
   double distance_after = 0.;            ///< measured distance to the input after the adaptive pass (fraction of the diagonal)
   double min_size = 0., max_size = 0.;   ///< range of the sizing field of the adaptive pass
 
@@ -78,6 +81,8 @@ struct Remeshing_statistics
     r["split_vertices"] = split_vertices;
     r["F_uniform"] = faces_uniform;
     r["adaptive_rounds"] = adaptive_rounds;
+    r["restored_vertices"] = restored_vertices;
+    r["sharp_edges_held"] = sharp_edges_held;
     r["distance_after"] = distance_after;
     r["min_size"] = min_size;
     r["max_size"] = max_size;
@@ -189,7 +194,8 @@ namespace internal {
 // within the target, after 6 refinements, or when the mesh has 2.5 times the faces of the uniform pass.
 template <typename TriangleMesh, typename VPM, typename EFM, typename VCM, typename SizeMap, typename GT>
 void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size, const Remeshing_reference<GT>& ref,
-                   double diagonal, double tolerance, unsigned iterations, Remeshing_statistics& st, bool verbose)
+                   const std::vector<typename GT::Point_3>& line_points, double diagonal, double tolerance,
+                   unsigned iterations, Remeshing_statistics& st, bool verbose)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   const double uniform = st.target_edge_length;
@@ -248,6 +254,13 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
       std::cerr << "[remeshing] refinement " << st.adaptive_rounds + 1 << ": " << count_faces() << " faces, distance "
                 << worst / diagonal << std::endl;
   }
+  // (c) the constraint lines back onto the input lines where collapses along them left chords
+  clock.reset();
+  st.restored_vertices = remesher.restore_lines(line_points, 0.25 * tolerance * diagonal, 8);
+  if(st.restored_vertices > 0) worst = measure_distances(tmesh, vpm, ref, err);
+  if(verbose)
+    std::cerr << "[remeshing] lines restored: " << st.restored_vertices << " vertices, distance " << worst / diagonal
+              << " (" << clock.time() << " s)" << std::endl;
   st.distance_after = worst / diagonal;
   st.min_size = uniform;
   st.max_size = 0.;
@@ -284,6 +297,15 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
     times the faces of pass 1 (predicted from the field), or once the mesh has that many, is not done,
     and splits stop at 2.8 times the faces of pass 1 (the prediction can fall short where the field
     varies fast), so that the output stays below about 3 times the faces of pass 1.
+
+  With the adaptive pass, both passes hold in place, besides the features, the input's other sharp edges
+  (dihedral angle above `feature_angle`, e.g. the short chains that the erosion of `detect_feature_edges()`
+  removed): they follow the rules of the features below, their ends, junctions and turns of more than 45
+  degrees never move, so the surface keeps its creases; at the end only the edges on an input feature
+  line are features again (an edge goes to the nearer of the two kinds of input line). After the
+  refinements, the lines are put back where collapses along them left chords: while an input line point
+  (vertex or edge midpoint) is farther than a quarter of `remeshing_tolerance` from every constrained
+  edge, the nearest one is split at that point (up to 8 rounds; not near an endpoint, never folding a face).
 
   The loop's rules at the features are those of pass 1: a feature edge is split at its midpoint (moved
   onto the nearest input feature segment when it lies within a quarter of the edge length) and never
@@ -337,6 +359,13 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
                             `L / 8`, after 6 refinements, or at the face budget}
       \cgalParamType{`double`}
       \cgalParamDefault{0.002}
+    \cgalParamNEnd
+    \cgalParamNBegin{feature_angle}
+      \cgalParamDescription{with the adaptive pass, the dihedral angle in degrees above which an input edge that
+                            is not a feature is still held in place (as in `detect_feature_edges()`); 180 or more
+                            holds none. Unused without the adaptive pass}
+      \cgalParamType{`double`}
+      \cgalParamDefault{35}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_sizing_map}
       \cgalParamDescription{receives, for every vertex of the result, the target edge length of the sizing
@@ -398,6 +427,7 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   auto sizing_out = get_parameter(np, internal_np::vertex_sizing_map);
   constexpr bool has_sizing_map = !std::is_same<decltype(sizing_out), CGAL::internal_np::Param_not_found>::value;
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5u);
+  const double sharp_angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
 
   Remeshing_statistics st;
   // (num_faces() of a Surface_mesh counts removed elements)
@@ -462,7 +492,70 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
 
   CGAL::Real_timer timer;
   timer.start();
-  PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remesh_np);
+  // With the adaptive pass, the constraints of both passes are the features plus the input's other sharp
+  // edges (dihedral angle above `feature_angle`: the short chains that the erosion of
+  // detect_feature_edges() removed), held in place so that the surface keeps its creases; their ends,
+  // junctions and turns never move. Afterwards every constrained edge is a feature again only if it lies
+  // on an input feature line.
+  auto constrained = get(CGAL::dynamic_edge_property_t<bool>(), tmesh);
+  auto fixed = get(CGAL::dynamic_vertex_property_t<bool>(), tmesh);
+  std::vector<typename GT::Point_3> line_points;
+  std::vector<typename GT::Segment_3> held_segments;
+  if(!adaptive)
+    PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remesh_np);
+  else
+  {
+    const double cos_sharp = std::cos(sharp_angle * CGAL_PI / 180.);
+    for(auto e : edges(tmesh))
+    {
+      bool c = get(edge_is_feature_map, e);
+      if(!c && sharp_angle < 180.)
+      {
+        const auto h = halfedge(e, tmesh);
+        auto normal = [&](auto g) {
+          return CGAL::cross_product(get(vpm, target(g, tmesh)) - get(vpm, source(g, tmesh)),
+                                     get(vpm, target(next(g, tmesh), tmesh)) - get(vpm, source(g, tmesh)));
+        };
+        const auto n1 = normal(h);
+        const auto n2 = normal(opposite(h, tmesh));
+        const double l = std::sqrt(CGAL::to_double(n1 * n1) * CGAL::to_double(n2 * n2));
+        if(l > 0. && CGAL::to_double(n1 * n2) / l < cos_sharp)
+        {
+          c = true;
+          ++st.sharp_edges_held;
+          held_segments.emplace_back(get(vpm, source(h, tmesh)), get(vpm, target(h, tmesh)));
+        }
+      }
+      put(constrained, e, c);
+      if(c)
+        line_points.push_back(CGAL::midpoint(get(vpm, source(halfedge(e, tmesh), tmesh)),
+                                             get(vpm, target(halfedge(e, tmesh), tmesh))));
+    }
+    std::vector<vertex_descriptor> held_corners;
+    internal::feature_corners_and_lines(tmesh, constrained, vpm, 45., held_corners);
+    for(vertex_descriptor v : vertices(tmesh))
+    {
+      put(fixed, v, bool(get(vcm, v)));
+      for(auto h : halfedges_around_target(v, tmesh))
+        if(get(constrained, edge(h, tmesh))) { line_points.push_back(get(vpm, v)); break; }
+    }
+    for(vertex_descriptor v : held_corners) put(fixed, v, true);
+    if(!held_segments.empty())
+    {
+      // the splits of the adaptive pass project onto either kind of line
+      reference.feature_segments.insert(reference.feature_segments.end(), held_segments.begin(), held_segments.end());
+      reference.features.rebuild(reference.feature_segments.begin(), reference.feature_segments.end());
+      reference.features.accelerate_distance_queries();
+    }
+    PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh,
+                             CGAL::parameters::number_of_iterations(iterations)
+                               .edge_is_constrained_map(constrained)
+                               .vertex_is_constrained_map(fixed)
+                               .protect_constraints(false)
+                               .collapse_constraints(true)
+                               .relax_constraints(false)
+                               .vertex_point_map(vpm));
+  }
   st.seconds_uniform = timer.time();
   if(verbose)
     std::cerr << "[remeshing] uniform pass at " << st.target_edge_length << ": "
@@ -475,7 +568,29 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   if(adaptive)
   {
     timer.reset();
-    adaptive_pass(tmesh, vpm, edge_is_feature_map, vcm, size, reference, diagonal, tolerance, iterations, st, verbose);
+    adaptive_pass(tmesh, vpm, constrained, fixed, size, reference, line_points, diagonal, tolerance, iterations, st,
+                  verbose);
+    // features again: the constrained edges that lie on an input feature line rather than on a held sharp edge
+    {
+      typedef typename GT::Segment_3 Segment;
+      typedef CGAL::AABB_segment_primitive<GT, typename std::vector<Segment>::const_iterator> Prim;
+      typedef CGAL::AABB_tree<CGAL::AABB_traits<GT, Prim>> Seg_tree;
+      const std::vector<Segment> feature_segments(reference.feature_segments.begin(),
+                                                  reference.feature_segments.end() - std::ptrdiff_t(held_segments.size()));
+      Seg_tree ftree(feature_segments.begin(), feature_segments.end()), htree(held_segments.begin(), held_segments.end());
+      if(!feature_segments.empty()) ftree.accelerate_distance_queries();
+      if(!held_segments.empty()) htree.accelerate_distance_queries();
+      for(auto e : edges(tmesh))
+      {
+        bool f = get(constrained, e);
+        if(f && !held_segments.empty())
+        {
+          const auto m = CGAL::midpoint(get(vpm, source(halfedge(e, tmesh), tmesh)), get(vpm, target(halfedge(e, tmesh), tmesh)));
+          f = !feature_segments.empty() && CGAL::to_double(ftree.squared_distance(m)) <= CGAL::to_double(htree.squared_distance(m));
+        }
+        put(edge_is_feature_map, e, f || is_border(e, tmesh));
+      }
+    }
     st.seconds_adaptive = timer.time();
     if(verbose)
       std::cerr << "[remeshing] adaptive pass: " << std::distance(faces(tmesh).begin(), faces(tmesh).end())

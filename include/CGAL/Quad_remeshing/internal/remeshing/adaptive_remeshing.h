@@ -102,6 +102,70 @@ public:
     return n != 0 && n != 2;
   }
 
+  // Puts the constraint lines back where they drifted: while some point of `line_points` (points of the
+  // input's constraint polylines) is farther than `tolerance` from every constrained edge, the nearest
+  // constrained edge is split at the farthest such point (unless that point is within a tenth of the
+  // edge length of an endpoint or the split would fold a face). At most `rounds` rounds; returns the
+  // number of vertices inserted.
+  std::size_t restore_lines(const std::vector<Point>& line_points, double tolerance, unsigned rounds)
+  {
+    typedef CGAL::AABB_segment_primitive<GT, typename std::vector<Segment>::const_iterator> Prim;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<GT, Prim>> Tree;
+    std::size_t inserted = 0;
+    for(unsigned round = 0; round < rounds; ++round)
+    {
+      std::vector<Segment> segments;
+      std::vector<edge_descriptor> owner;
+      for(edge_descriptor e : edges(tm_))
+        if(get(efm_, e))
+        {
+          segments.emplace_back(point(source(halfedge(e, tm_), tm_)), point(target(halfedge(e, tm_), tm_)));
+          owner.push_back(e);
+        }
+      if(segments.empty()) return inserted;
+      Tree tree(segments.begin(), segments.end());
+      tree.accelerate_distance_queries();
+      // per edge, the farthest point out of tolerance (deterministic: the first of equal ones)
+      std::vector<std::pair<double, std::size_t>> worst(segments.size(), {0., std::size_t(-1)});
+      for(std::size_t i = 0; i < line_points.size(); ++i)
+      {
+        const auto cp = tree.closest_point_and_primitive(line_points[i]);
+        const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(line_points[i], cp.first)));
+        const std::size_t k = std::size_t(cp.second - segments.cbegin());
+        if(d > tolerance && d > worst[k].first) worst[k] = {d, i};
+      }
+      std::size_t done = 0;
+      for(std::size_t k = 0; k < segments.size(); ++k)
+      {
+        if(worst[k].second == std::size_t(-1)) continue;
+        const halfedge_descriptor h = halfedge(owner[k], tm_);
+        const Point& q = line_points[worst[k].second];
+        const Point& a = point(source(h, tm_));
+        const Point& b = point(target(h, tm_));
+        const double l2 = CGAL::to_double(CGAL::squared_distance(a, b));
+        if(CGAL::to_double(CGAL::squared_distance(a, q)) < 0.01 * l2 ||
+           CGAL::to_double(CGAL::squared_distance(b, q)) < 0.01 * l2)
+          continue;
+        bool folds = false;
+        for(halfedge_descriptor g : {h, opposite(h, tm_)})
+        {
+          if(is_border(g, tm_)) continue;
+          const Point& c = point(target(next(g, tm_), tm_));
+          const Point& u = point(source(g, tm_));
+          const Point& w = point(target(g, tm_));
+          const Vector n = normal(u, w, c);
+          if(cosine(n, normal(u, q, c)) < 0.5 || cosine(n, normal(q, w, c)) < 0.5) folds = true;
+        }
+        if(folds) continue;
+        split_edge(h, q);
+        ++done;
+      }
+      inserted += done;
+      if(done == 0) break;
+    }
+    return inserted;
+  }
+
 private:
   const Point& point(vertex_descriptor v) const { return get(vpm_, v); }
   double length(halfedge_descriptor h) const
