@@ -8,6 +8,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 
@@ -152,6 +153,18 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
                               "before any element"));
   BOOST_TEST(throws_bad_input(write_text("io_fuzz3.ply", "ply\nformat ascii 1.0\nelement vertex 99999999999\n"
                                                         "property float x\nend_header\n"), "exceeds"));
+  // found by fuzzing: CGAL 5.5's OFF reader allocated the 170835621 faces of this header (4 GB)
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz4.off", "OFF\n114 170835621 0.707107 -0 0\n0.382683 0.92388 0\n"),
+                              "cannot fit"));
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz5.off", "# comment\nCOFF\n# another\n99999999 1 0\n0 0 0\n"),
+                              "cannot fit"));
+  {
+    // binary OFF: big-endian counts
+    std::string bin = "OFF BINARY\n";
+    for(std::uint32_t x : {3u, 2000000000u, 0u})
+      for(int k = 3; k >= 0; --k) bin.push_back(char((x >> (8 * k)) & 0xff));
+    BOOST_TEST(throws_bad_input(write_text("io_fuzz6.off", bin), "cannot fit"));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
