@@ -140,23 +140,7 @@ public:
         if(worst[k].second == std::size_t(-1)) continue;
         const halfedge_descriptor h = halfedge(owner[k], tm_);
         const Point& q = line_points[worst[k].second];
-        const Point& a = point(source(h, tm_));
-        const Point& b = point(target(h, tm_));
-        const double l2 = CGAL::to_double(CGAL::squared_distance(a, b));
-        if(CGAL::to_double(CGAL::squared_distance(a, q)) < 0.01 * l2 ||
-           CGAL::to_double(CGAL::squared_distance(b, q)) < 0.01 * l2)
-          continue;
-        bool folds = false;
-        for(halfedge_descriptor g : {h, opposite(h, tm_)})
-        {
-          if(is_border(g, tm_)) continue;
-          const Point& c = point(target(next(g, tm_), tm_));
-          const Point& u = point(source(g, tm_));
-          const Point& w = point(target(g, tm_));
-          const Vector n = normal(u, w, c);
-          if(cosine(n, normal(u, q, c)) < 0.5 || cosine(n, normal(q, w, c)) < 0.5) folds = true;
-        }
-        if(folds) continue;
+        if(!is_safe_split_point(h, q, 0.01, 0.5)) continue;
         split_edge(h, q);
         ++done;
       }
@@ -204,11 +188,20 @@ private:
     if(!(CGAL::to_double(CGAL::squared_distance(m, q)) <= (feature ? 0.0625 : 0.25) * l * l)) return m;
     // the projection must not land near an endpoint (e.g. on an input corner that is already a vertex)
     // nor fold a face of the edge: the midpoint itself is used then
+    return is_safe_split_point(h, q, 0.09, 0.) ? q : m;
+  }
+
+  // Whether splitting the edge of `h` at `q` is safe: the squared distance of `q` to both endpoints is at
+  // least `min_squared_fraction` times the squared edge length, and the normals of the two faces replacing
+  // each face of the edge stay within acos(`min_cosine`) of its normal.
+  bool is_safe_split_point(halfedge_descriptor h, const Point& q, double min_squared_fraction, double min_cosine) const
+  {
     const Point& a = point(source(h, tm_));
     const Point& b = point(target(h, tm_));
-    if(CGAL::to_double(CGAL::squared_distance(a, q)) < 0.09 * l * l ||
-       CGAL::to_double(CGAL::squared_distance(b, q)) < 0.09 * l * l)
-      return m;
+    const double near2 = min_squared_fraction * CGAL::to_double(CGAL::squared_distance(a, b));
+    if(CGAL::to_double(CGAL::squared_distance(a, q)) < near2 ||
+       CGAL::to_double(CGAL::squared_distance(b, q)) < near2)
+      return false;
     for(halfedge_descriptor g : {h, opposite(h, tm_)})
     {
       if(is_border(g, tm_)) continue;
@@ -216,9 +209,9 @@ private:
       const Point& u = point(source(g, tm_));
       const Point& w = point(target(g, tm_));
       const Vector n = normal(u, w, c);
-      if(cosine(n, normal(u, q, c)) < 0. || cosine(n, normal(q, w, c)) < 0.) return m;
+      if(cosine(n, normal(u, q, c)) < min_cosine || cosine(n, normal(q, w, c)) < min_cosine) return false;
     }
-    return q;
+    return true;
   }
 
   // Splits the edge of `h` at `p` and triangulates both sides; the new edges are not features.
