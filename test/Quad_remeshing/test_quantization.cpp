@@ -314,6 +314,37 @@ BOOST_AUTO_TEST_CASE(unmet_alignment_is_dropped_in_the_second_solve)
   BOOST_CHECK_CLOSE(st.objective + 1., brute_force(pb, kept) + 1., 1e-6);
 }
 
+#ifdef CGAL_USE_GLPK
+// GLPK traits whose solves after the first one throw, as a solver can (e.g. out of memory)
+struct Throws_after_first_solve : QR::GLPK_mixed_integer_program_traits_with_limits<double>
+{
+  static int& calls() { static int n = 0; return n; }
+  bool solve() override
+  {
+    if(++calls() > 1) throw std::runtime_error("second solve fails");
+    return QR::GLPK_mixed_integer_program_traits_with_limits<double>::solve();
+  }
+};
+
+// A failing second solve (the one without the dropped alignment pairs) keeps the first solve's result
+// instead of sending the whole cluster to the fallback.
+BOOST_AUTO_TEST_CASE(failing_second_solve_keeps_the_first_result)
+{
+  Side_quantization_problem pb;
+  pb.arcs = {{4.}, {3., 3}, {3., 3}, {2., 2}, {4., 4}, {3.3}, {3.3}};
+  pb.patches = {{{0}, {1}, {2}}, {{0}, {3}, {4}}, {{2}, {5}, {6}}}; // as above: one pair is dropped
+  Throws_after_first_solve::calls() = 0;
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides<Throws_after_first_solve>(pb, s);
+  BOOST_CHECK_EQUAL(Throws_after_first_solve::calls(), 2); // the second solve was tried
+  BOOST_CHECK_EQUAL(st.fallback_clusters, 0u);
+  BOOST_CHECK_EQUAL(st.dropped_pairs, 1u);
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_REQUIRE_EQUAL(st.status.size(), 1u);
+  BOOST_CHECK(st.status[0].find("fallback") == std::string::npos);
+}
+#endif
+
 BOOST_AUTO_TEST_CASE(parity_on_generated_layouts_solver_fallback_threads)
 {
   std::mt19937 rng(11);

@@ -312,9 +312,9 @@ quantize_patch_sides(const Side_quantization_problem& problem,
 
   const auto clusters = internal::make_clusters(v, max_cluster);
   st.clusters = clusters.size();
+  std::vector<std::size_t> cluster_of(problem.patches.size());
+  for(std::size_t c = 0; c < clusters.size(); ++c) for(std::size_t p : clusters[c]) cluster_of[p] = c;
   if(clusters.size() > 1) {
-    std::vector<long> cluster_of(problem.patches.size());
-    for(std::size_t c = 0; c < clusters.size(); ++c) for(std::size_t p : clusters[c]) cluster_of[p] = long(c);
     // Even values on arcs between clusters keep each cluster's parity problem independent and solvable.
     for(std::size_t a = 0; a < problem.arcs.size(); ++a) {
       const auto& inc = v.arc_patches[a];
@@ -327,21 +327,15 @@ quantize_patch_sides(const Side_quantization_problem& problem,
     w.alignment > 0 ? internal::alignment_pairs(v) : std::vector<internal::Alignment_pair>();
   std::vector<char> kept(all_pairs.size(), 1);
   std::vector<std::vector<std::size_t> > cluster_pairs(clusters.size());
-  {
-    std::vector<long> cluster_of(problem.patches.size());
-    for(std::size_t c = 0; c < clusters.size(); ++c) for(std::size_t p : clusters[c]) cluster_of[p] = long(c);
-    for(std::size_t k = 0; k < all_pairs.size(); ++k)
-      if(cluster_of[all_pairs[k].p] == cluster_of[all_pairs[k].q])
-        cluster_pairs[std::size_t(cluster_of[all_pairs[k].p])].push_back(k);
+  std::vector<std::size_t> every_pair(all_pairs.size());
+  for(std::size_t k = 0; k < all_pairs.size(); ++k) {
+    every_pair[k] = k;
+    if(cluster_of[all_pairs[k].p] == cluster_of[all_pairs[k].q]) cluster_pairs[cluster_of[all_pairs[k].p]].push_back(k);
   }
+  // the pairs among `ids` that are still kept
   auto kept_pairs = [&](const std::vector<std::size_t>& ids) {
     std::vector<internal::Alignment_pair> out;
     for(std::size_t k : ids) if(kept[k]) out.push_back(all_pairs[k]);
-    return out;
-  };
-  auto all_kept_pairs = [&]() {
-    std::vector<internal::Alignment_pair> out;
-    for(std::size_t k = 0; k < all_pairs.size(); ++k) if(kept[k]) out.push_back(all_pairs[k]);
     return out;
   };
 
@@ -371,12 +365,15 @@ quantize_patch_sides(const Side_quantization_problem& problem,
             if(internal::alignment_violation(v, all_pairs[k], local[c]) != 0) { kept[k] = 0; dropped = true; }
           const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           if(!dropped || (time_limit > 0 && spent >= time_limit)) continue;
-          MIPTraits mip2;
-          std::vector<int> second = local[c];
-          const internal::Cluster_result r2 =
-            internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w,
-                                    time_limit > 0 ? time_limit - spent : 0., second_node_limit, gap, second, mip2);
-          if(r2.solved) { local[c] = second; results[c].status = r2.status; }
+          // a failure of the second solve keeps the first solve's result
+          try {
+            MIPTraits mip2;
+            std::vector<int> second = local[c];
+            const internal::Cluster_result r2 =
+              internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w,
+                                      time_limit > 0 ? time_limit - spent : 0., second_node_limit, gap, second, mip2);
+            if(r2.solved) { local[c] = second; results[c].status = r2.status; }
+          } catch(...) {}
         } catch(...) { results[c] = internal::Cluster_result(); }
       }
     };
@@ -398,7 +395,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
     // Strip moves over the whole layout: they also cross the arcs fixed between clusters.
     internal::Quantization_view whole = v;
     for(std::size_t a = 0; a < problem.arcs.size(); ++a) whole.fixed[a] = problem.arcs[a].fixed;
-    internal::improve_locally(whole, s, w, all_kept_pairs());
+    internal::improve_locally(whole, s, w, kept_pairs(every_pair));
   }
   for(std::size_t c = 0; c < clusters.size(); ++c) {
     st.variables += results[c].variables;
@@ -410,7 +407,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
                                                 : std::string("fallback (") + to_string(Mip_status(results[c].status)) + ")");
     }
   }
-  internal::evaluate(v, s, w, st, all_kept_pairs(), all_pairs);
+  internal::evaluate(v, s, w, st, kept_pairs(every_pair), all_pairs);
   st.alignment_pairs = all_pairs.size();
   st.dropped_pairs = std::size_t(std::count(kept.begin(), kept.end(), char(0)));
   if(st.odd_perimeters != 0) throw std::logic_error("quantize_patch_sides: odd perimeter left (bug)");
