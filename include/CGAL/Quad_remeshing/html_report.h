@@ -8,6 +8,7 @@
 
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/internal/cross_field/face_geometry.h>
 #include <CGAL/Quad_remeshing/internal/html/viewer_page.h>
 #include <CGAL/Quad_remeshing/internal/html/writer.h>
 #include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
@@ -366,12 +367,10 @@ Html_layer cross_field_layer(const std::string& name, const TriangleMesh& tmesh,
 {
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tmesh));
-  typedef std::array<double, 3> A;
-  const auto sub = [](const A& a, const A& b) { return A{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-  const auto dot = [](const A& a, const A& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  const auto cross = [](const A& a, const A& b) {
-    return A{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
+  typedef internal::Vec3d A;
+  using internal::v_cross;
+  using internal::v_dot;
+  using internal::v_sub;
   const std::size_t n = static_cast<std::size_t>(num_faces(tmesh));
   const std::size_t stride = (max_crosses == 0 || n <= max_crosses) ? 1 : (n + max_crosses - 1) / max_crosses;
   const CGAL::IO::Color second(static_cast<unsigned char>(color.red() * 0.6), static_cast<unsigned char>(color.green() * 0.6),
@@ -390,23 +389,23 @@ Html_layer cross_field_layer(const std::string& name, const TriangleMesh& tmesh,
     for(std::size_t k = 0; k < p.size(); ++k)
     {
       for(int d = 0; d < 3; ++d) c[d] += p[k][d] / double(p.size());
-      const A e = sub(p[(k + 1) % p.size()], p[k]);
-      perimeter += std::sqrt(dot(e, e));
-      const A t = cross(p[k], p[(k + 1) % p.size()]); // Newell's normal
+      const A e = v_sub(p[(k + 1) % p.size()], p[k]);
+      perimeter += std::sqrt(v_dot(e, e));
+      const A t = v_cross(p[k], p[(k + 1) % p.size()]); // Newell's normal
       for(int d = 0; d < 3; ++d) normal[d] += t[d];
     }
-    const double nn = std::sqrt(dot(normal, normal));
+    const double nn = std::sqrt(v_dot(normal, normal));
     if(!(nn > 0.)) continue;
     for(double& x : normal) x /= nn;
     const auto w = get(face_field, f);
     A u{CGAL::to_double(w.x()), CGAL::to_double(w.y()), CGAL::to_double(w.z())};
-    const double un = dot(u, normal);
+    const double un = v_dot(u, normal);
     for(int d = 0; d < 3; ++d) u[d] -= un * normal[d];
-    const double ul = std::sqrt(dot(u, u));
+    const double ul = std::sqrt(v_dot(u, u));
     if(!(ul > 0.) || !std::isfinite(ul)) continue;
     const double arm = 0.3 * perimeter / double(p.size());
     for(double& x : u) x *= arm / ul;
-    const A v = cross(normal, u);
+    const A v = v_cross(normal, u);
     for(const A& d : {u, v})
     {
       layer.segments.endpoints.push_back(A{c[0] - d[0], c[1] - d[1], c[2] - d[2]});
