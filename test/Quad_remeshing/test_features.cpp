@@ -102,6 +102,28 @@ BOOST_AUTO_TEST_CASE(erode_dilate_only_removes)
   }
 }
 
+// A cap (angle over 170 degrees) whose three edges are features would be a patch thinner than any
+// quad (truck, next to a window): its longest edge is no feature, the two others carry the line.
+BOOST_AUTO_TEST_CASE(cap_with_three_feature_edges_loses_its_long_edge)
+{
+  Mesh m = qr_test::cap_plate();
+  BOOST_REQUIRE(m.number_of_faces() == 10u && CGAL::is_valid_polygon_mesh(m));
+  const auto P = Mesh::Vertex_index(6), Q = Mesh::Vertex_index(5), R = Mesh::Vertex_index(8);
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  const auto st = QR::detect_feature_edges(m, f);
+  BOOST_CHECK_EQUAL(st.cap_edges, 1u);
+  BOOST_CHECK(f[m.edge(m.halfedge(P, Q))]);  // border
+  BOOST_CHECK(f[m.edge(m.halfedge(Q, R))]);  // sharp
+  BOOST_CHECK(!f[m.edge(m.halfedge(P, R))]); // sharp, but the long edge of the cap
+  BOOST_CHECK_EQUAL(st.sharp_edges, 2u);     // PR and QR were over the threshold
+  BOOST_CHECK_EQUAL(st.report()["cap_edges"].number(), 1.);
+  // not a cap without the lift (QR and PR are flat), nor with a threshold above the cap's dihedral angles
+  Mesh flat = qr_test::cap_plate(0.);
+  auto g = flat.add_property_map<Mesh::Edge_index, bool>("e:g", false).first;
+  BOOST_CHECK_EQUAL(QR::detect_feature_edges(flat, g).cap_edges, 0u);
+  BOOST_CHECK_EQUAL(QR::detect_feature_edges(m, f, QR::parameters::feature_angle(80.)).cap_edges, 0u);
+}
+
 BOOST_AUTO_TEST_CASE(read_feature_files)
 {
   Mesh m = load("fandisk.off");

@@ -88,6 +88,25 @@ BOOST_AUTO_TEST_CASE(chair_with_slit_patches)
   BOOST_TEST(f.hausdorff_max <= 0.02);
 }
 
+// truck: a cap triangle next to a window (three feature edges, 0.0018 wide) became a patch of its own
+// whose corner at the window was dropped, and a quad with four collinear corners filled it. On the
+// same configuration (qr_test::cap_plate) the quads near the cap must keep a proper shape.
+BOOST_AUTO_TEST_CASE(cap_with_three_feature_edges_gives_no_flat_quad)
+{
+  const Mesh t = qr_test::cap_plate();
+  Mesh q;
+  QR::quad_remesh(t, q);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST_MESSAGE("cap plate: " << quality.faces << " quads, SJ min " << quality.min_scaled_jacobian);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(quality.min_scaled_jacobian > 0.3);
+  auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  QR::detect_evaluation_feature_edges(t, features);
+  BOOST_TEST(QR::feature_fidelity(t, features, q).feature_coverage >= 0.99);
+}
+
 // With a sizing tolerance the quads shrink where draco's surface bends: more of them, closer to the input.
 BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
 {

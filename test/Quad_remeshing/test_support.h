@@ -19,6 +19,25 @@ inline std::string data_file(const std::string& name) { return std::string(QR_TE
 /// a path for files written by the tests
 inline std::string output_file(const std::string& name) { return std::string(QR_TEST_BINARY_DIR) + "/" + name; }
 
+/// A unit square plate with a square hole (0.2..0.5 x 0.3..0.6) and a cap triangle P Q R: P = (0.5, 0.6) and
+/// Q = (0.5, 0.3) are the hole's right corners, R = (0.504, 0.1) lies almost on the line PQ beyond Q (the angle
+/// at Q is about 177 degrees). Q is lifted by `lift`, which tilts the cap so that its three edges are sharp:
+/// PQ is a border, PR and QR have dihedral angles of about 65 degrees. It reproduces truck's sliver next to a
+/// window (input vertices 1972, 1976 and 1982, a cap 0.0018 wide whose edges are all features).
+inline Mesh cap_plate(double lift = 0.005)
+{
+  Mesh m;
+  const Point_3 p[9] = {Point_3(0, 0, 0),   Point_3(1, 0, 0),      Point_3(1, 1, 0),
+                        Point_3(0, 1, 0),   Point_3(0.2, 0.3, 0),  Point_3(0.5, 0.3, lift),
+                        Point_3(0.5, 0.6, 0), Point_3(0.2, 0.6, 0), Point_3(0.504, 0.1, 0)};
+  Mesh::Vertex_index v[9];
+  for(int i = 0; i < 9; ++i) v[i] = m.add_vertex(p[i]);
+  const int f[10][3] = {{6, 5, 8}, {8, 1, 2}, {8, 2, 6}, {6, 2, 3}, {6, 3, 7},
+                        {7, 3, 0}, {7, 0, 4}, {4, 0, 8}, {0, 1, 8}, {4, 8, 5}};
+  for(const auto& t : f) m.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return m;
+}
+
 } // namespace qr_test
 
 #endif

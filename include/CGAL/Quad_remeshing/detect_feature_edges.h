@@ -45,6 +45,7 @@ namespace Quad_remeshing {
 struct Feature_detection_statistics
 {
   std::size_t sharp_edges = 0;    ///< non-border edges over the dihedral threshold, before erode/dilate
+  std::size_t cap_edges = 0;      ///< sharp edges dropped because they close a cap on the border whose three edges are features
   std::size_t feature_edges = 0;  ///< feature edges in the result (border edges included)
   std::size_t feature_lines = 0;  ///< chains of feature edges between corners (closed loops count once)
   std::size_t corners = 0;        ///< feature corners
@@ -55,6 +56,7 @@ struct Feature_detection_statistics
   {
     Report r = Report::object();
     r["sharp_edges"] = sharp_edges;
+    r["cap_edges"] = cap_edges;
     r["feature_edges"] = feature_edges;
     r["feature_lines"] = feature_lines;
     r["corners"] = corners;
@@ -72,6 +74,11 @@ struct Feature_detection_statistics
   feature chains (never an edge incident to a vertex where more than two feature edges meet, never a
   border edge), and as many dilation steps grow the survivors back along the removed edges: chains of
   at most about twice that many edges that touch no other feature vanish, the others are restored.
+
+  A triangle with an angle over 170 degrees (a cap) with a border edge, whose three edges are all
+  features, would be a patch thinner than any quad, bounded by lines that its tiny height makes sharp:
+  its longest edge stops being a feature (or, if that edge is a border edge, its two other edges do),
+  the line then follows the other two edges, within the cap's height.
 
   A feature corner is a vertex with feature degree 1 (an end) or more than 2 (a junction), or of degree 2
   where the feature line turns by more than `feature_corner_angle`.
@@ -204,6 +211,49 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
       {
         ++stats.sharp_edges;
         candidates.push_back(e);
+      }
+    }
+
+    // A cap (a triangle with an almost flat angle) on the border whose three edges are all features
+    // would be a patch of its own, thinner than any quad: its normal, and so the dihedral angles of
+    // its edges, come from its tiny height. Its longest edge stops being a feature (the two others
+    // carry the line, within the cap's height); if that edge is a border, its two other edges stop
+    // instead. (Caps inside the surface are left alone: on camelhead, the only development mesh with
+    // such caps, the rule removed a collapsed quad but the feature coverage fell from 0.943 to 0.923.)
+    if(angle < 180.)
+    {
+      const double cos_flat = std::cos(170. * CGAL_PI / 180.); // an angle over 170 degrees makes a cap
+      for(auto f : faces(tmesh))
+      {
+        const halfedge_descriptor h0 = halfedge(f, tmesh);
+        const halfedge_descriptor hs[3] = {h0, next(h0, tmesh), next(next(h0, tmesh), tmesh)};
+        bool all = true;
+        for(halfedge_descriptor h : hs) all = all && get(edge_is_feature_map, edge(h, tmesh));
+        if(!all) continue;
+        bool on_border = false;
+        for(halfedge_descriptor h : hs) on_border = on_border || is_border(edge(h, tmesh), tmesh);
+        if(!on_border) continue;
+        // the angle opposite hs[i] is at target(next(hs[i]))
+        for(int i = 0; i < 3; ++i)
+        {
+          const halfedge_descriptor a = hs[(i + 1) % 3], b = hs[(i + 2) % 3]; // a ends at the apex, b leaves it
+          const Vector_3 u = get(vpm, source(a, tmesh)) - get(vpm, target(a, tmesh));
+          const Vector_3 w = get(vpm, target(b, tmesh)) - get(vpm, source(b, tmesh));
+          const double l = std::sqrt(CGAL::to_double(u * u) * CGAL::to_double(w * w));
+          if(!(l > 0.) || CGAL::to_double(u * w) / l > cos_flat) continue;
+          if(!is_border(edge(hs[i], tmesh), tmesh))
+          {
+            put(edge_is_feature_map, edge(hs[i], tmesh), false);
+            ++stats.cap_edges;
+          }
+          else if(!is_border(edge(a, tmesh), tmesh) && !is_border(edge(b, tmesh), tmesh))
+          {
+            put(edge_is_feature_map, edge(a, tmesh), false);
+            put(edge_is_feature_map, edge(b, tmesh), false);
+            stats.cap_edges += 2;
+          }
+          break;
+        }
       }
     }
 
