@@ -18,7 +18,10 @@ ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 900
 
 if [ "${QR_SKIP_SANITIZERS:-0}" != "1" ]; then
   echo "== ASan + UBSan build and tests"
+  # -O1 -g1 (line tables only): half the compile time and two thirds of the memory of -O2 -g under the
+  # sanitizers (test_pipeline.cpp: 298 s / 4.5 GB against 590 s / 6.8 GB), with file:line in the reports
   cmake -S "$root" -B "$build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQR_SANITIZE=ON \
+        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
         -DQR_BUILD_DOC=OFF -DQR_BUILD_BENCHMARK=OFF -DQR_BUILD_FUZZ=OFF
   cmake --build "$build-asan" -j "$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \

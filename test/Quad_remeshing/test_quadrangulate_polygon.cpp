@@ -217,11 +217,8 @@ BOOST_AUTO_TEST_CASE(exhaustive_small_side_counts)
   BOOST_TEST(2 * all_general < all_ring);
   // n=2: 32 even vectors minus (1,1); n=3: 256; n=4: 2048; n=5: 3888; n=6: 23328
   BOOST_TEST(cases == 29551u);
-  // issue #8: the whole exhaustive set in under 10 s in an optimised build; an AddressSanitizer build is
-  // several times slower, and stage_benchmark measures this target anyway
-#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
-  BOOST_TEST(secs < 10.);
-#endif
+  // the speed target of the exhaustive set (issue #8: under 10 s) is measured by stage_benchmark
+  // (quadrangulate_polygon_all_small), not asserted here: a unit test must not depend on the load
 }
 
 BOOST_AUTO_TEST_CASE(tarini_worked_examples)
