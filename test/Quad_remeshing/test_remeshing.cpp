@@ -11,6 +11,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -248,6 +249,32 @@ BOOST_AUTO_TEST_CASE(density_helpers)
   auto r = st.report();
   BOOST_CHECK_EQUAL(r["F"].number(), double(st.faces_after));
   BOOST_CHECK_THROW(QR::remesh_for_quadrangulation(m, f, QR::parameters::quad_edge_length(-1.)), std::invalid_argument);
+}
+
+// Found by the fuzz target fuzz_quad_remesh (corpus_pipeline/crash_collinear_face): a closed
+// tetrahedron one of whose faces has three collinear corners (vertex 2 lies on the edge 0-1), which the
+// repair cannot collapse; CGAL's isotropic_remeshing crashed on it (segmentation fault), now it is a
+// clear refusal.
+BOOST_AUTO_TEST_CASE(degenerate_face_is_refused)
+{
+  Mesh m;
+  const auto v0 = m.add_vertex(Point_3(7, 7, 15)), v1 = m.add_vertex(Point_3(7, 7, 0));
+  const auto v2 = m.add_vertex(Point_3(7, 7, 7)), v3 = m.add_vertex(Point_3(15, 15, 6));
+  for(auto t : {std::array<Mesh::Vertex_index, 3>{v0, v2, v1}, {v0, v1, v3}, {v0, v3, v2}, {v1, v2, v3}})
+    BOOST_REQUIRE(m.add_face(t[0], t[1], t[2]) != Mesh::null_face());
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  QR::detect_feature_edges(m, f);
+  BOOST_CHECK_THROW(QR::remesh_for_quadrangulation(m, f, QR::parameters::quad_edge_length(1.8)), std::invalid_argument);
+  // without the degenerate face (an open tetrahedron) the same call remeshes
+  Mesh open;
+  const auto w0 = open.add_vertex(Point_3(0, 0, 15)), w1 = open.add_vertex(Point_3(0, 0, 0));
+  const auto w2 = open.add_vertex(Point_3(15, 0, 6)), w3 = open.add_vertex(Point_3(15, 15, 6));
+  open.add_face(w0, w1, w3);
+  open.add_face(w0, w3, w2);
+  open.add_face(w1, w2, w3);
+  auto g = open.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  QR::detect_feature_edges(open, g);
+  BOOST_CHECK_GT(QR::remesh_for_quadrangulation(open, g, QR::parameters::quad_edge_length(1.8)).faces_after, 3u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

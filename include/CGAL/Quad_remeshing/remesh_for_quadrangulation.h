@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -31,6 +32,7 @@
 #include <iostream>
 #include <iterator>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 /// if `false`, remesh_for_quadrangulation() does the uniform pass only (`bool`)
@@ -400,7 +402,8 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
   \cgalNamedParamsEnd
 
   @return the statistics of the remeshing
-  @throws std::invalid_argument if `tmesh` is not a triangle mesh or `quad_edge_length` is not positive
+  @throws std::invalid_argument if `tmesh` is not a triangle mesh, has a degenerate face (three collinear
+          corners) or `quad_edge_length` is not positive
 */
 template <typename TriangleMesh, typename EdgeIsFeatureMap,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -421,6 +424,14 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     throw std::invalid_argument("remesh_for_quadrangulation: the input is not a triangle mesh");
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, tmesh));
+  // CGAL's isotropic_remeshing reads out of its arrays on a face with collinear corners (found by the
+  // fuzz target fuzz_quad_remesh: a segmentation fault in its tangential relaxation)
+  std::size_t degenerate_faces = 0;
+  for(face_descriptor f : faces(tmesh))
+    if(PMP::is_degenerate_triangle_face(f, tmesh, CGAL::parameters::vertex_point_map(vpm))) ++degenerate_faces;
+  if(degenerate_faces > 0)
+    throw std::invalid_argument("remesh_for_quadrangulation: " + std::to_string(degenerate_faces) +
+                                " degenerate face(s) (collinear corners) that read_and_repair() could not remove");
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::remeshing_tolerance), 0.002);
