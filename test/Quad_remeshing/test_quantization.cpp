@@ -401,6 +401,27 @@ BOOST_AUTO_TEST_CASE(large_problem_fallback_and_time_limit)
             << ", objective " << st.objective << " (fallback alone " << stf.objective << ")\n";
 }
 
+// The time limit bounds the stage: with none left, no cluster is solved and every cluster keeps the
+// solver-free values (fallback and strip moves), exactly as without the solver.
+BOOST_AUTO_TEST_CASE(no_time_left_keeps_the_fallback)
+{
+  std::mt19937 rng(5);
+  const auto pb = make_grid(12, 12, rng, true);
+  std::vector<int> s, sf;
+  const auto st = QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(40), P::maximum_running_time(1e-9)));
+  const auto stf = QR::quantize_patch_sides(pb, sf, P::combine(P::maximum_cluster_size(40), P::use_mip_solver(false)));
+  BOOST_TEST_REQUIRE(st.status.size() > 1u);
+  for(const std::string& x : st.status) BOOST_TEST(x == "fallback (time limit)");
+  BOOST_TEST(st.fallback_clusters == st.status.size());
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_TEST(s == sf);
+  // with time to solve, the program does better
+  std::vector<int> sm;
+  const auto stm = QR::quantize_patch_sides(pb, sm, P::maximum_cluster_size(40));
+  BOOST_TEST(stm.fallback_clusters == 0u);
+  BOOST_TEST(stm.objective < st.objective);
+}
+
 // A node limit, unlike a time limit, stops every run at the same point of the search: the same result
 // on every run and with any number of threads, even when the search is cut short.
 BOOST_AUTO_TEST_CASE(node_limit_is_deterministic)

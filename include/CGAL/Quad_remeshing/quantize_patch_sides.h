@@ -244,8 +244,11 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
       \cgalParamDefault{500}
     \cgalParamNEnd
     \cgalParamNBegin{maximum_running_time}
-      \cgalParamDescription{time limit in seconds of each cluster's solve (<= 0: none); a solve it stops
-                            has a result that depends on the speed and load of the machine}
+      \cgalParamDescription{time limit in seconds of the stage (<= 0: none): each cluster's solve gets, when
+                            it starts, an even share of the time left (times the number of threads); a
+                            cluster that starts with no time left keeps the fallback values (status
+                            `fallback (time limit)`); a result a limit stops depends on the speed and
+                            load of the machine}
       \cgalParamType{`double`}
       \cgalParamDefault{0}
     \cgalParamNEnd
@@ -345,6 +348,14 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   internal::improve_locally(v, s, w, all_pairs);
 
   std::vector<internal::Cluster_result> results(clusters.size());
+  std::vector<char> no_time_left(clusters.size(), 0);
+  // the time limit of cluster c's solves, when it starts: 0 without a stage limit, < 0 when none is left
+  auto solve_limit = [&](std::size_t c) -> double {
+    if(!(time_limit > 0)) return 0.;
+    const double left = time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if(left <= 0) return -1.;
+    return (std::min)(left, left * double(threads) / double(clusters.size() - c));
+  };
   if constexpr(!std::is_same<MIPTraits, internal::No_mip_traits>::value) if(use_solver) {
     std::vector<std::vector<int> > local(clusters.size());
     std::atomic<std::size_t> next(0);
@@ -353,9 +364,11 @@ quantize_patch_sides(const Side_quantization_problem& problem,
       for(std::size_t c; (c = next++) < clusters.size();) {
         try {
           const auto start = std::chrono::steady_clock::now();
+          const double limit = solve_limit(c);
+          if(limit < 0) { no_time_left[c] = 1; continue; }
           MIPTraits mip;
           local[c] = s;
-          results[c] = internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w, time_limit,
+          results[c] = internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w, limit,
                                                node_limit, gap, local[c], mip);
           // Second solve without the alignment terms the first could not meet (they only pull the
           // other terms away), started from the first solution.
@@ -364,14 +377,14 @@ quantize_patch_sides(const Side_quantization_problem& problem,
           for(std::size_t k : cluster_pairs[c])
             if(internal::alignment_violation(v, all_pairs[k], local[c]) != 0) { kept[k] = 0; dropped = true; }
           const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          if(!dropped || (time_limit > 0 && spent >= time_limit)) continue;
+          if(!dropped || (limit > 0 && spent >= limit)) continue;
           // a failure of the second solve keeps the first solve's result
           try {
             MIPTraits mip2;
             std::vector<int> second = local[c];
             const internal::Cluster_result r2 =
               internal::solve_cluster(v, clusters[c], kept_pairs(cluster_pairs[c]), w,
-                                      time_limit > 0 ? time_limit - spent : 0., second_node_limit, gap, second, mip2);
+                                      limit > 0 ? limit - spent : 0., second_node_limit, gap, second, mip2);
             if(r2.solved) { local[c] = second; results[c].status = r2.status; }
           } catch(...) {}
         } catch(...) { results[c] = internal::Cluster_result(); }
@@ -403,7 +416,8 @@ quantize_patch_sides(const Side_quantization_problem& problem,
     if(results[c].solved) st.status.push_back(to_string(Mip_status(results[c].status)));
     else {
       ++st.fallback_clusters;
-      st.status.push_back(results[c].status < 0 ? std::string("fallback")
+      st.status.push_back(no_time_left[c] ? std::string("fallback (time limit)")
+                          : results[c].status < 0 ? std::string("fallback")
                                                 : std::string("fallback (") + to_string(Mip_status(results[c].status)) + ")");
     }
   }
