@@ -397,8 +397,10 @@ private:
   {
     state_.layout = std::make_unique<Layout>(state_.tmesh, state_.field, state_.singularity);
     const auto st = QR::trace_patch_layout(state_.tmesh, state_.feature, *state_.layout,
-                                           CGAL::parameters::verbose(opt_.verbose).maximum_running_time(
-                                             budget_.stage_limit(QR::internal::layout_time_share)));
+                                           QR::parameters::combine(
+                                             CGAL::parameters::verbose(opt_.verbose).maximum_running_time(
+                                               budget_.stage_limit(QR::internal::layout_time_share)),
+                                             QR::parameters::number_of_threads(opt_.threads)));
     budget_.record("layout", st.report());
     if(!opt_.dump_dir.empty())
     {

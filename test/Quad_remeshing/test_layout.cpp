@@ -578,6 +578,16 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   BOOST_TEST(s.stopped_in_round.empty());
   BOOST_TEST(s.rounds.size() == 6u);
 
+  // the candidates traced in three threads: the same layout
+  Layout parallel(m, field, no_singularity);
+  const auto sp = CGAL::Quad_remeshing::trace_patch_layout(m, feature, parallel,
+                                                           CGAL::Quad_remeshing::parameters::number_of_threads(3));
+  BOOST_TEST(sp.layout.paths == s.layout.paths);
+  BOOST_TEST_REQUIRE(parallel.number_of_patches() == layout.number_of_patches());
+  std::size_t same_patch = 0;
+  for(F f : m.faces()) same_patch += parallel.patch_id(f) == layout.patch_id(f);
+  BOOST_TEST(same_patch == m.number_of_faces());
+
   // A time limit stops the rounds after the convexity round (which always runs) and skips the later ones
   // but the last resort: the layout is still one of disks with every feature on a patch boundary.
   Layout cut(m, field, no_singularity);

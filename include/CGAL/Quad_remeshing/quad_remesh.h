@@ -128,6 +128,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const std::function<void(const std::string&)> no_callback = [](const std::string&) {};
   const auto progress = choose_parameter(get_parameter(np, CGAL::internal_np::callback), no_callback);
   const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
+  const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
   internal::Time_budget budget(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
 
   TriangleMesh tm(tmesh);
@@ -154,7 +155,8 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   progress("layout");
   Layout layout(tm, field, singularity);
   report["layout"] = trace_patch_layout(tm, feature, layout,
-    CGAL::parameters::verbose(verbose).maximum_running_time(budget.stage_limit(internal::layout_time_share))).report();
+    QRP::combine(CGAL::parameters::verbose(verbose).maximum_running_time(budget.stage_limit(internal::layout_time_share)),
+                 QRP::number_of_threads(threads))).report();
   budget.record("layout", report["layout"]);
 
   progress("quantize");
@@ -163,7 +165,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const std::vector<double> sizing = internal::quad_sizing(
     tm, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.));
   report["quantize"] = quantize_patch_sides(internal::quantization_problem(tm, layout, polygons, length, sizing), counts,
-    QRP::number_of_threads(choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u))
+    QRP::number_of_threads(threads)
       .maximum_running_time(budget.stage_limit(internal::quantize_time_share))).report();
   budget.record("quantize", report["quantize"]);
   if(!sizing.empty())

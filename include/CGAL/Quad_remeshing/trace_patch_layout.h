@@ -91,6 +91,7 @@ public:
   typedef typename Layout::Node Node;
   typedef typename Layout::Patch Patch;
   typedef typename Layout::Patch_change Patch_change;
+  typedef typename Layout::Trace_job Trace_job;
   typedef typename Layout::vertex_descriptor vertex_descriptor;
   typedef typename Layout::halfedge_descriptor halfedge_descriptor;
   typedef typename Layout::face_descriptor face_descriptor;
@@ -129,6 +130,8 @@ public:
                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
   }
   bool out_of_time() const { return limited_ && std::chrono::steady_clock::now() >= deadline_; }
+  // the candidate searches of a round run in up to this many threads (the same candidates for any number)
+  void set_threads(unsigned threads) { threads_ = (std::max)(1u, threads); }
 
   // The acceptance rule, in one place (paper section 5.2). A candidate that crosses no path of the layout
   // tangentially is kept when
@@ -323,19 +326,21 @@ public:
   // (`opposite_ends`: to the nodes of the other starts in the opposite direction instead)
   std::vector<Candidate> trace_from(const std::vector<Start>& starts, const std::vector<Node>& ends, bool opposite_ends)
   {
-    std::vector<Candidate> out;
-    for(const Start& s : starts) {
-      if(out_of_time()) break;
-      std::vector<Node> e;
-      if(opposite_ends) {
+    std::vector<std::vector<Node> > own_ends(opposite_ends ? starts.size() : 0);
+    std::vector<Trace_job> jobs;
+    for(std::size_t i = 0; i < starts.size(); ++i) {
+      if(opposite_ends)
         for(const Start& t : starts)
-          if(t.v != s.v) for(int k = 0; k < 4; ++k) e.push_back(Node{t.v, k});
-      }
-      for(int k = 0; k < 4; ++k) {
-        auto c = layout_.trace(Node{s.v, k}, opposite_ends ? e : ends);
-        if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back() || !enters(*c, s.patch)) continue;
-        out.push_back(Candidate{std::move(*c), 0.});
-      }
+          if(t.v != starts[i].v) for(int k = 0; k < 4; ++k) own_ends[i].push_back(Node{t.v, k});
+      for(int k = 0; k < 4; ++k) jobs.push_back(Trace_job{Node{starts[i].v, k}, opposite_ends ? &own_ends[i] : &ends});
+    }
+    auto paths = layout_.trace_all(jobs, threads_, [this]() { return out_of_time(); });
+    std::vector<Candidate> out;
+    for(std::size_t j = 0; j < jobs.size(); ++j) {
+      auto& c = paths[j];
+      if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back() || !enters(*c, starts[j / 4].patch))
+        continue;
+      out.push_back(Candidate{std::move(*c), 0.});
     }
     return out;
   }
@@ -367,15 +372,17 @@ public:
   // two loops per sample (the two field directions; the other two trace the same loops backwards)
   std::vector<Candidate> trace_loops(const std::vector<vertex_descriptor>& samples, const std::vector<Node>& extra_ends)
   {
-    std::vector<Candidate> out;
-    for(vertex_descriptor v : samples)
-      for(int k = 0; k < 2 && !out_of_time(); ++k) {
-        std::vector<Node> ends = extra_ends;
-        ends.push_back(Node{v, k});
-        auto c = layout_.trace(Node{v, k}, ends);
-        if(!c || c->vertices.size() < 3) continue;
-        out.push_back(Candidate{std::move(*c), 0.});
+    std::vector<std::vector<Node> > ends(2 * samples.size(), extra_ends);
+    std::vector<Trace_job> jobs;
+    for(std::size_t i = 0; i < samples.size(); ++i)
+      for(int k = 0; k < 2; ++k) {
+        ends[2 * i + k].push_back(Node{samples[i], k});
+        jobs.push_back(Trace_job{Node{samples[i], k}, &ends[2 * i + k]});
       }
+    auto paths = layout_.trace_all(jobs, threads_, [this]() { return out_of_time(); });
+    std::vector<Candidate> out;
+    for(auto& c : paths)
+      if(c && c->vertices.size() >= 3) out.push_back(Candidate{std::move(*c), 0.});
     return out;
   }
 
@@ -545,6 +552,7 @@ private:
   std::vector<double> dist_;
   bool limited_ = false;
   std::chrono::steady_clock::time_point deadline_;
+  unsigned threads_ = 1;
 };
 
 } // namespace internal
@@ -612,6 +620,12 @@ private:
       \cgalParamType{`double`}
       \cgalParamDefault{`0` (no limit)}
     \cgalParamNEnd
+    \cgalParamNBegin{number_of_threads}
+      \cgalParamDescription{the candidate paths of a round are traced in up to this many threads (the
+                            layout does not depend on it)}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
     \cgalParamNBegin{verbose}
       \cgalParamDescription{whether to print the rounds to `std::cerr`, prefixed by `[layout]`}
       \cgalParamType{`bool`}
@@ -635,11 +649,13 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const double loop_ratio = choose_parameter(get_parameter(np, internal_np::loop_sample_ratio), 0.01);
   const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
 
   Trace_patch_layout_statistics stats;
   CGAL::Real_timer total;
   total.start();
   internal::Layout_tracer<Layout> tracer(layout);
+  tracer.set_threads(threads);
 
   typedef Trace_patch_layout_statistics::Round Round;
   // a round that may stop at the time limit: skipped once it is reached, and the first one it stops is named
