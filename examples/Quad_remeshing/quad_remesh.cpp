@@ -39,6 +39,7 @@
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
+#include <thread>
 #include <vector>
 
 namespace QR = CGAL::Quad_remeshing;
@@ -84,7 +85,8 @@ const char* usage_text =
   "  --report FILE.json   write the figures of every stage as JSON\n"
   "  --html FILE.html     write a self-contained report with a 3D viewer of every stage\n"
   "  --seed N             random seed (default 0); the same input and seed give the same output\n"
-  "  --threads N          worker threads (default 1)\n"
+  "  --threads N          worker threads of the layout and quantize stages (default: the hardware\n"
+  "                       threads; the output does not depend on N)\n"
   "  --time-limit S       time limit in seconds of the whole run (default: none): the layout rounds, the\n"
   "                       quantize solves and the smoothing iterations stop early to meet it (the report\n"
   "                       and the summary say what they gave up); the output then depends on the\n"
@@ -106,7 +108,7 @@ struct Options
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
   double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.;
   long faces = 0;
-  unsigned seed = 0, threads = 1;
+  unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false;
 };
 
