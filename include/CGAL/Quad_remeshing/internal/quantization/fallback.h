@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -91,16 +92,18 @@ inline Strip_graph make_strip_graph(const Quantization_view& v)
 
 // Breadth-first search over nodes 0..n-1 from `start`: `edges(p)` lists the (edge, node) steps out of
 // p in a fixed order, `skip(edge)` leaves an edge out. Stops at the first node reached for which
-// `goal(q)` holds and returns it (-1: none); prev_node / prev_edge then give the path back to start.
+// `goal(q)` holds and returns it (-1: none, or max_expanded nodes expanded first); prev_node /
+// prev_edge then give the path back to start.
 template <typename Edges, typename Skip, typename Goal>
 long breadth_first(std::size_t n, std::size_t start, const Edges& edges, const Skip& skip, const Goal& goal,
-                   std::vector<long>& prev_node, std::vector<long>& prev_edge)
+                   std::vector<long>& prev_node, std::vector<long>& prev_edge,
+                   std::size_t max_expanded = (std::numeric_limits<std::size_t>::max)())
 {
   prev_node.assign(n, -2);
   prev_edge.assign(n, -1);
   std::deque<std::size_t> queue{start};
   prev_node[start] = -1;
-  while(!queue.empty()) {
+  for(std::size_t expanded = 0; !queue.empty() && expanded < max_expanded; ++expanded) {
     const std::size_t p = queue.front(); queue.pop_front();
     for(const auto& e : edges(p)) {
       if(skip(e.first) || prev_node[e.second] != -2) continue;

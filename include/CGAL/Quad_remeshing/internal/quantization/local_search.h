@@ -34,7 +34,7 @@ inline double patch_regularity_cost(const Quantization_view& v, std::size_t p, c
 // together. The move is kept if it lowers the objective (alignment terms of `pairs` included) and
 // keeps every arc in its window. One pass over the strips in root-id order; returns the decrease.
 inline double improve_strip_cycles(const Quantization_view& v, std::vector<int>& s, const Quantization_weights& w,
-                                   const std::vector<Alignment_pair>& pairs = {})
+                                   const std::vector<Alignment_pair>& pairs = {}, std::size_t max_expanded = 1000)
 {
   const auto& pb = *v.problem;
   const std::size_t na = pb.arcs.size(), np = pb.patches.size(), outside = np;
@@ -85,7 +85,9 @@ inline double improve_strip_cycles(const Quantization_view& v, std::vector<int>&
       auto strip_edges = [&](std::size_t p) -> const std::vector<std::pair<std::size_t, std::size_t> >& { return g.adjacent[p]; };
       auto skip_r = [&](std::size_t e) { return e == r; };
       auto is_to = [&](std::size_t q) { return q == to; };
-      if(breadth_first(np + 1, from, strip_edges, skip_r, is_to, prev_node, prev_strip) < 0) continue;
+      // (a cycle through more than max_expanded nodes is rarely an improvement: the search is bounded so
+      // that a pass stays linear in the size of the layout)
+      if(breadth_first(np + 1, from, strip_edges, skip_r, is_to, prev_node, prev_strip, max_expanded) < 0) continue;
       path.assign(1, r);
       for(long q = long(to); q != long(from); q = prev_node[q]) path.push_back(std::size_t(prev_strip[q]));
       const double before = local_cost(path);
