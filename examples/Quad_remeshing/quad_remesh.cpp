@@ -81,7 +81,8 @@ const char* usage_text =
   "                       or one 'i j' vertex-index pair per line)\n"
   "  --until STAGE        stop after STAGE and write its mesh as OUTPUT; stages, in order:\n"
   "                       repair, features, remesh, field, layout, quantize, quadrangulate, smooth\n"
-  "  --dump DIR           write every finished stage's result into DIR\n"
+  "  --dump DIR           write every finished stage's result into DIR (the quantize stage: its\n"
+  "                       integer program's input, 6_quantization_problem.txt)\n"
   "  --report FILE.json   write the figures of every stage as JSON\n"
   "  --html FILE.html     write a self-contained report with a 3D viewer of every stage\n"
   "  --seed N             random seed (default 0); the same input and seed give the same output\n"
@@ -424,6 +425,11 @@ private:
       QR::internal::quad_sizing(state_.tmesh, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance);
     const QR::Side_quantization_problem pb =
       QR::internal::quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.quad_edge_length, sizing);
+    if(!opt_.dump_dir.empty())
+    {
+      std::ofstream f(opt_.dump_dir + "/6_quantization_problem.txt");
+      QR::internal::write_quantization_problem(f, pb);
+    }
     // no time limit unless asked for: the default node limit keeps the result independent of the load
     const auto st = QR::quantize_patch_sides(pb, state_.arc_edge_counts,
                                              QRP::number_of_threads(opt_.threads).maximum_running_time(
