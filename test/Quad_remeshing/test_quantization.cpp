@@ -383,21 +383,23 @@ BOOST_AUTO_TEST_CASE(large_problem_fallback_and_time_limit)
   auto stf = QR::quantize_patch_sides(pb, s, QR::parameters::use_mip_solver(false));
   BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
   std::cerr << "[quantization test] fallback on " << pb.patches.size() << " patches: " << stf.seconds << " s\n";
-  // One cluster of ~2000 patches with fractional targets and a 1 s limit.
-  const auto st = QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(100000), P::maximum_running_time(1.)));
+  // One cluster of ~2000 patches with fractional targets and a 2 s limit on the stage: the fallback and
+  // the strip moves run first, the solve gets what is left.
+  const auto st = QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(100000), P::maximum_running_time(2.)));
   BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
-  // The limit bounds the run; the fallback and the model building come on top of it. An
-  // AddressSanitizer build runs them several times slower (9.4 s measured), so the bound is checked in
-  // optimised builds only (2.7-3.2 s there).
+  // The limit bounds the stage; the model building comes on top of it. An AddressSanitizer build runs the
+  // fallback several times slower, leaving the solve no time at all, so the time and the solve's status
+  // are checked in optimised builds only.
 #if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
   BOOST_CHECK_LT(st.seconds, 6.);
-#endif
-  // The fallback is offered as the first incumbent: the limit ends with a solution, no worse than it.
+  // the fallback is offered as the first incumbent: the limit ends with a solution
   BOOST_CHECK(st.status.at(0) == "feasible_at_limit" || st.status.at(0) == "optimal");
+#endif
+  // never worse than the fallback alone
   std::vector<int> sf1;
   const auto stf1 = QR::quantize_patch_sides(pb, sf1, P::combine(P::maximum_cluster_size(100000), P::use_mip_solver(false)));
   BOOST_CHECK_LE(st.objective, stf1.objective + 1e-6);
-  std::cerr << "[quantization test] one cluster, 1 s limit: " << st.seconds << " s, status " << st.status.at(0)
+  std::cerr << "[quantization test] one cluster, 2 s limit: " << st.seconds << " s, status " << st.status.at(0)
             << ", objective " << st.objective << " (fallback alone " << stf.objective << ")\n";
 }
 
