@@ -11,7 +11,8 @@
 //     --html              also write each mesh's HTML report (quad_remesh --html DIR/<name>.html)
 //     -- ARGS...          passed on to quad_remesh (e.g. -- --until remesh --faces 2000)
 // Results: DIR/results.csv, DIR/results.jsonl (appended), DIR/summary.json, DIR/summary.html (a page
-// with one row per mesh of this run, linking to its report, log and output), and a summary on stdout.
+// with one row per mesh of this run, linking to its report, log and output), DIR/summary.md (the same
+// as a Markdown table, as in the user manual), and a summary on stdout.
 
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/internal/html/writer.h>
@@ -271,6 +272,40 @@ void write_summary_html(const std::string& path, const Options& o, const std::ve
   os << "</table>\n</body>\n</html>\n";
 }
 
+// The summary as a Markdown table (Doxygen renders it; the manual's development-set table is one), one
+// row per mesh of this run in the order run, then the summary figures.
+void write_summary_markdown(const std::string& path, const std::vector<Run>& runs, const QR::Report& summary)
+{
+  std::ofstream os(path);
+  if(!os) { std::cerr << "quad_remesh_batch: cannot write " << path << "\n"; return; }
+  auto fixed = [](const QR::Report* v, int digits) {
+    if(!v || v->kind() != QR::Report::NUMBER) return std::string("-");
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(digits) << v->number();
+    return s.str();
+  };
+  os << "| mesh | status | seconds | peak MiB | quads | irregular | SJ mean | SJ min | SJ <= 0 | feature coverage "
+        "| Hausdorff / diagonal | valid |\n"
+     << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|\n";
+  for(const Run& r : runs)
+  {
+    const QR::Report* output = r.report.find("output");
+    const QR::Report* q = quality_of(r.report);
+    auto get = [&](const char* k) { return q ? q->find(k) : nullptr; };
+    const QR::Report* valid = get("valid");
+    os << "| " << r.name << " | " << r.status << " | " << std::fixed << std::setprecision(1) << r.seconds << " | "
+       << r.peak_kb / 1024 << " | " << fixed(output ? output->find("F") : nullptr, 0) << " | "
+       << fixed(get("irregular_vertices"), 0) << " | " << fixed(get("mean_scaled_jacobian"), 3) << " | "
+       << fixed(get("min_scaled_jacobian"), 3) << " | " << fixed(get("non_positive_scaled_jacobian"), 0) << " | "
+       << fixed(get("feature_coverage"), 3) << " | " << fixed(get("hausdorff_max"), 4) << " | "
+       << (valid ? (valid->boolean() ? "yes" : "no") : "-") << " |\n";
+  }
+  os << "\n";
+  for(std::size_t i = 0; i < summary.keys().size(); ++i)
+    os << (i > 0 ? ", " : "") << summary.keys()[i] << " " << number_or_empty(&summary.elements()[i]);
+  os << "\n";
+}
+
 Options parse(int argc, char** argv)
 {
   Options o;
@@ -412,6 +447,7 @@ int main(int argc, char** argv)
   summary["irregular_median"] = percentile(irregular, 0.5);
   std::ofstream(o.out + "/summary.json") << summary.to_json() << "\n";
   write_summary_html(o.out + "/summary.html", o, runs, summary);
+  write_summary_markdown(o.out + "/summary.md", runs, summary);
   std::cout << "summary: " << summary.to_json(-1) << "\n";
   return 0;
 }

@@ -4,7 +4,7 @@
 //   stage_benchmark [options]
 //     --data DIR          the bundled meshes (default: the repository's data/meshes)
 //     --only TEXT         run only the measurements whose name contains TEXT
-//     --threads N         threads of the quantization and of quad_remesh() (default 1)
+//     --threads N         threads of the layout, the quantization and quad_remesh() (default 1)
 //     --all-meshes DIR    also time the quantization, GLPK and solver-free fallback, on every mesh of DIR
 //                         (slow: every stage before it runs first)
 //     --json FILE         also write the results as JSON
@@ -153,11 +153,13 @@ Timing field_stage(Prepared& p, bool verbose)
 }
 
 // a Patch_layout and trace_patch_layout(); returns their times
-Timing trace_stage(Prepared& p, bool verbose)
+Timing trace_stage(Prepared& p, unsigned threads, bool verbose)
 {
   const Stopwatch t;
   p.layout = std::make_unique<Layout>(p.tm, p.field, p.singularity);
-  const auto st = QR::trace_patch_layout(p.tm, p.feature, *p.layout, CGAL::parameters::verbose(verbose));
+  const auto st = QR::trace_patch_layout(p.tm, p.feature, *p.layout,
+                                         QR::parameters::combine(CGAL::parameters::verbose(verbose),
+                                                                 QR::parameters::number_of_threads(threads)));
   const Timing s = t.time();
   p.figures["layout"] = st.layout.report();
   return s;
@@ -201,8 +203,8 @@ public:
     measure("remesh_abc_00000006", 6., [&](Result& r) { remesh_stage("abc_00000006", r); });
     measure("cross_field_40k", 1., [&](Result& r) { cross_field_40k(r); });
     measure("direction_graph_1000_traces_fandisk", 2., [&](Result& r) { direction_graph(r); });
-    measure("layout_fandisk", 3., [&](Result& r) { r.set(trace_stage(prepared("fandisk"), opt_.verbose)); r.details = prepared("fandisk").figures["layout"]; });
-    measure("layout_abc_00000006", 10., [&](Result& r) { r.set(trace_stage(prepared("abc_00000006"), opt_.verbose)); r.details = prepared("abc_00000006").figures["layout"]; });
+    measure("layout_fandisk", 3., [&](Result& r) { r.set(trace_stage(prepared("fandisk"), opt_.threads, opt_.verbose)); r.details = prepared("fandisk").figures["layout"]; });
+    measure("layout_abc_00000006", 10., [&](Result& r) { r.set(trace_stage(prepared("abc_00000006"), opt_.threads, opt_.verbose)); r.details = prepared("abc_00000006").figures["layout"]; });
     measure("quantize_fandisk_glpk", 1., [&](Result& r) { r.set(quantize_stage(traced("fandisk"), true, opt_.threads, opt_.verbose, r.details)); });
     measure("quantize_fandisk_fallback", 1., [&](Result& r) { r.set(quantize_stage(traced("fandisk"), false, opt_.threads, opt_.verbose, r.details)); });
     if(!opt_.all_meshes.empty()) all_meshes();
@@ -259,7 +261,7 @@ private:
   Prepared& traced(const std::string& name)
   {
     Prepared& p = prepared(name);
-    if(!p.layout) trace_stage(p, opt_.verbose);
+    if(!p.layout) trace_stage(p, opt_.threads, opt_.verbose);
     return p;
   }
 
@@ -345,7 +347,7 @@ private:
       try {
         read_and_remesh(f, 0., opt_.verbose, *p);
         field_stage(*p, opt_.verbose);
-        trace_stage(*p, opt_.verbose);
+        trace_stage(*p, opt_.threads, opt_.verbose);
       } catch(const std::exception& e) {
         ++errors_;
         std::cout << std::left << std::setw(44) << ("quantize:" + name) << "  ERROR before quantization: " << e.what() << std::endl;

@@ -21,6 +21,7 @@
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/time_budget.h>
 #include <CGAL/Quad_remeshing/html_report.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 
@@ -38,6 +39,7 @@
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
+#include <thread>
 #include <vector>
 
 namespace QR = CGAL::Quad_remeshing;
@@ -79,13 +81,17 @@ const char* usage_text =
   "                       or one 'i j' vertex-index pair per line)\n"
   "  --until STAGE        stop after STAGE and write its mesh as OUTPUT; stages, in order:\n"
   "                       repair, features, remesh, field, layout, quantize, quadrangulate, smooth\n"
-  "  --dump DIR           write every finished stage's result into DIR\n"
+  "  --dump DIR           write every finished stage's result into DIR (the quantize stage: its\n"
+  "                       integer program's input, 6_quantization_problem.txt)\n"
   "  --report FILE.json   write the figures of every stage as JSON\n"
   "  --html FILE.html     write a self-contained report with a 3D viewer of every stage\n"
   "  --seed N             random seed (default 0); the same input and seed give the same output\n"
-  "  --threads N          worker threads (default 1)\n"
-  "  --time-limit S       time limit in seconds of each solve of the quantize stage (default: none,\n"
-  "                       a node limit; a time limit makes the output depend on the machine's speed)\n"
+  "  --threads N          worker threads of the layout and quantize stages (default: the hardware\n"
+  "                       threads; the output does not depend on N)\n"
+  "  --time-limit S       time limit in seconds of the whole run (default: none): the layout rounds, the\n"
+  "                       quantize solves and the smoothing iterations stop early to meet it (the report\n"
+  "                       and the summary say what they gave up); the output then depends on the\n"
+  "                       machine's speed and load\n"
   "  --adaptive-remeshing run the adaptive remeshing pass (experimental)\n"
   "  --verbose            print progress of every stage\n"
   "  --quiet              print nothing but errors\n"
@@ -103,7 +109,7 @@ struct Options
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
   double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.;
   long faces = 0;
-  unsigned seed = 0, threads = 1;
+  unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false;
 };
 
@@ -208,7 +214,7 @@ struct Pipeline_state
 class Pipeline
 {
 public:
-  explicit Pipeline(const Options& o) : opt_(o) { report_ = QR::Report::object(); }
+  explicit Pipeline(const Options& o) : opt_(o), budget_(o.time_limit) { report_ = QR::Report::object(); }
 
   int run()
   {
@@ -225,6 +231,8 @@ public:
         run_stage(name);
         if(name == opt_.until) break;
       }
+      // the time limit covers the stages, not the measurement of the output's quality
+      report_["time_limit"] = budget_.report();
       write_output();
       report_["status"] = "ok";
     } catch(const QR::Bad_input& e) {
@@ -237,6 +245,7 @@ public:
       fail(std::string("stage '") + current_stage_ + "' failed: " + e.what());
       exit_code = 1;
     }
+    if(!report_.find("time_limit")) report_["time_limit"] = budget_.report();
     write_report();
     write_html();
     if(!opt_.quiet) print_summary();
@@ -391,7 +400,11 @@ private:
   {
     state_.layout = std::make_unique<Layout>(state_.tmesh, state_.field, state_.singularity);
     const auto st = QR::trace_patch_layout(state_.tmesh, state_.feature, *state_.layout,
-                                           CGAL::parameters::verbose(opt_.verbose));
+                                           QR::parameters::combine(
+                                             CGAL::parameters::verbose(opt_.verbose).maximum_running_time(
+                                               budget_.stage_limit(QR::internal::layout_time_share)),
+                                             QR::parameters::number_of_threads(opt_.threads)));
+    budget_.record("layout", st.report());
     if(!opt_.dump_dir.empty())
     {
       std::ofstream f(opt_.dump_dir + "/5_layout.ply");
@@ -412,10 +425,17 @@ private:
       QR::internal::quad_sizing(state_.tmesh, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance);
     const QR::Side_quantization_problem pb =
       QR::internal::quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.quad_edge_length, sizing);
+    if(!opt_.dump_dir.empty())
+    {
+      std::ofstream f(opt_.dump_dir + "/6_quantization_problem.txt");
+      QR::internal::write_quantization_problem(f, pb);
+    }
     // no time limit unless asked for: the default node limit keeps the result independent of the load
     const auto st = QR::quantize_patch_sides(pb, state_.arc_edge_counts,
-                                             QRP::number_of_threads(opt_.threads).maximum_running_time(opt_.time_limit));
+                                             QRP::number_of_threads(opt_.threads).maximum_running_time(
+                                               budget_.stage_limit(QR::internal::quantize_time_share)));
     QR::Report r = st.report();
+    budget_.record("quantize", r);
     r["sizing_tolerance"] = opt_.sizing_tolerance;
     if(!sizing.empty()) r["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
     r["relaxed_patches"] = state_.polygons->relaxed_patches;
@@ -461,7 +481,9 @@ private:
   {
     const QR::Quad_smoothing_statistics st = QR::smooth_quad_mesh(
       state_.qmesh, state_.tmesh, state_.feature,
-      CGAL::parameters::edge_is_constrained_map(state_.qfeature).verbose(opt_.verbose));
+      CGAL::parameters::edge_is_constrained_map(state_.qfeature).verbose(opt_.verbose).maximum_running_time(
+        budget_.stage_limit(QR::internal::smooth_time_share)));
+    budget_.record("smooth", st.report());
     return st.report();
   }
 
@@ -592,6 +614,9 @@ private:
              << ", valid " << (q->find("valid") && q->find("valid")->boolean() ? "yes" : "no") << "\n";
         }
       }
+    if(budget_.limited())
+      os << "  time limit: " << opt_.time_limit << " s, " << (report_["time_limit"]["met"].boolean() ? "met" : "exceeded")
+         << (budget_.any_degraded() ? "; degraded: " + budget_.summary() : std::string("; nothing degraded")) << "\n";
     os << "  status: " << report_["status"].string();
     if(!report_["error"].string().empty()) os << " (" << report_["error"].string() << ")";
     os << "\n";
@@ -601,6 +626,7 @@ private:
   QR::Report report_;
   std::vector<QR::Html_layer> extra_layers_; // layers the stages add for the HTML report
   Pipeline_state state_;
+  QR::internal::Time_budget budget_; // --time-limit: shares of the time left for the stages that can stop early
   std::string current_stage_, last_stage_;
 };
 

@@ -46,3 +46,11 @@ qr_cli_test(full_pipeline_lego 0
                  --dump ${QR_CLI_OUT}/lego_dump --quiet
             FILE ${QR_CLI_OUT}/lego.json
             FILE_MATCHES "\"status\": \"ok\".*\"name\": \"smooth\".*\"pure_quad\": true.*\"manifold\": true.*\"valid\": true")
+# --time-limit bounds the whole run: far too short for lego, the layout and the smoothing stop early,
+# the summary and the report say so, and the output is still a valid quad mesh
+qr_cli_test(time_limit_lego 0
+            ARGS ${QR_MESHES}/lego.off -o ${QR_CLI_OUT}/lego_limited.obj --report ${QR_CLI_OUT}/lego_limited.json
+                 --time-limit 0.001
+            OUTPUT_MATCHES "time limit: 0.001 s, exceeded; degraded: layout \\(stopped in round"
+            FILE ${QR_CLI_OUT}/lego_limited.json
+            FILE_MATCHES "\"time_limit\": {[^}]*\"met\": false.*\"stage\": \"smooth\".*\"valid\": true")

@@ -142,6 +142,11 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
   BOOST_TEST(throws_bad_input(write_text("io_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n"), ""));
   BOOST_TEST(throws_bad_input(write_text("io_degenerate.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n"),
                               "degenerate"));
+  // a closed tetrahedron with a vertex on an opposite edge: the face on that edge has three collinear
+  // corners that no collapse can remove (found by the pipeline fuzz target)
+  BOOST_TEST(throws_bad_input(write_text("io_collinear.off", "OFF\n4 4 0\n7 7 15\n7 7 0\n7 7 7\n15 15 6\n"
+                                                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+                              "three collinear corners"));
   BOOST_TEST(throws_bad_input(write_text("io_mesh.xyz", "0 0 0\n"), "unsupported"));
   // found by fuzzing: a property before any element crashed CGAL 5.5's PLY reader
   BOOST_TEST(throws_bad_input(write_text("io_fuzz1.ply",

@@ -600,6 +600,33 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   for(E e : m.edges()) if(feature[e]) BOOST_TEST(layout.is_cut(e));
   BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9); // 170/176 with the stand-in field
   BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
+  BOOST_TEST(s.stopped_in_round.empty());
+  BOOST_TEST(s.rounds.size() == 6u);
+
+  // the candidates traced in three threads: the same layout
+  Layout parallel(m, field, no_singularity);
+  const auto sp = CGAL::Quad_remeshing::trace_patch_layout(m, feature, parallel,
+                                                           CGAL::Quad_remeshing::parameters::number_of_threads(3));
+  BOOST_TEST(sp.layout.paths == s.layout.paths);
+  BOOST_TEST_REQUIRE(parallel.number_of_patches() == layout.number_of_patches());
+  std::size_t same_patch = 0;
+  for(F f : m.faces()) same_patch += parallel.patch_id(f) == layout.patch_id(f);
+  BOOST_TEST(same_patch == m.number_of_faces());
+
+  // A time limit stops the rounds after the convexity round (which always runs) and skips the later ones
+  // but the last resort: the layout is still one of disks with every feature on a patch boundary.
+  Layout cut(m, field, no_singularity);
+  const auto sc = CGAL::Quad_remeshing::trace_patch_layout(m, feature, cut, CGAL::parameters::maximum_running_time(1e-9));
+  BOOST_TEST(sc.stopped_in_round == "loops");
+  std::vector<std::string> names;
+  for(const auto& r : sc.rounds) names.push_back(r.name);
+  BOOST_TEST((names == std::vector<std::string>{"features", "convexity", "loops", "last_resort"}));
+  BOOST_TEST(sc.rounds[1].paths == s.rounds[1].paths); // the convexity round ran to its end
+  BOOST_TEST(sc.rounds[2].paths == 0u);
+  BOOST_TEST(sc.report().find("stopped_early")->boolean());
+  BOOST_TEST(sc.layout.paths < s.layout.paths);
+  for(std::size_t p = 0; p < cut.number_of_patches(); ++p) BOOST_TEST(cut.validity(p) != Layout::NOT_A_DISK);
+  for(E e : m.edges()) if(feature[e]) BOOST_TEST(cut.is_cut(e));
 }
 
 BOOST_AUTO_TEST_CASE(quad_sizing_follows_curvature)

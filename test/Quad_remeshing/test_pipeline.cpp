@@ -46,6 +46,38 @@ BOOST_AUTO_TEST_CASE(fandisk_end_to_end)
   BOOST_TEST(f.hausdorff_max <= 0.02);
 }
 
+// A time limit far too short for the stages that always run: the stages that can stop early give up what
+// they can, say so in the report, and the output is still a valid quad mesh without inverted quads.
+// Without a limit nothing is given up.
+BOOST_AUTO_TEST_CASE(time_limit_degrades_and_stays_valid)
+{
+  Mesh t, q, q0;
+  QR::read_and_repair(qr_test::data_file("fandisk.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q, CGAL::parameters::maximum_running_time(1e-3));
+  const QR::Report* tl = r.find("time_limit");
+  BOOST_TEST_REQUIRE(tl != nullptr);
+  BOOST_TEST(tl->find("seconds")->number() == 1e-3);
+  BOOST_TEST(!tl->find("met")->boolean());
+  std::vector<std::string> stages;
+  for(const QR::Report& d : tl->find("degraded")->elements()) stages.push_back(d.find("stage")->string());
+  // the quantization gives up its solves too when the time left is gone before they start (a solve
+  // started with a sliver of time may still return the first incumbent)
+  BOOST_TEST_REQUIRE(stages.size() >= 2u);
+  BOOST_TEST(stages.front() == "layout");
+  BOOST_TEST(stages.back() == "smooth");
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(quality.euler_characteristic == 2);
+
+  const QR::Report r0 = QR::quad_remesh(t, q0);
+  BOOST_TEST(r0.find("time_limit")->find("seconds")->number() == 0.);
+  BOOST_TEST(r0.find("time_limit")->find("degraded") == nullptr);
+  BOOST_TEST(!r0.find("layout")->find("stopped_early")->boolean());
+  BOOST_TEST(num_faces(q0) > num_faces(q)); // the full layout has more patches
+}
+
 // Same input, same quad mesh: on every run and with any number of threads. The quantization of
 // draco_test_nm stops at its node limit; with the former 10 s limit it changed with the machine's load.
 BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)

@@ -401,6 +401,27 @@ BOOST_AUTO_TEST_CASE(large_problem_fallback_and_time_limit)
             << ", objective " << st.objective << " (fallback alone " << stf.objective << ")\n";
 }
 
+// The time limit bounds the stage: with none left, no cluster is solved and every cluster keeps the
+// solver-free values (fallback and strip moves), exactly as without the solver.
+BOOST_AUTO_TEST_CASE(no_time_left_keeps_the_fallback)
+{
+  std::mt19937 rng(5);
+  const auto pb = make_grid(12, 12, rng, true);
+  std::vector<int> s, sf;
+  const auto st = QR::quantize_patch_sides(pb, s, P::combine(P::maximum_cluster_size(40), P::maximum_running_time(1e-9)));
+  const auto stf = QR::quantize_patch_sides(pb, sf, P::combine(P::maximum_cluster_size(40), P::use_mip_solver(false)));
+  BOOST_TEST_REQUIRE(st.status.size() > 1u);
+  for(const std::string& x : st.status) BOOST_TEST(x == "fallback (time limit)");
+  BOOST_TEST(st.fallback_clusters == st.status.size());
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_TEST(s == sf);
+  // with time to solve, the program does better
+  std::vector<int> sm;
+  const auto stm = QR::quantize_patch_sides(pb, sm, P::maximum_cluster_size(40));
+  BOOST_TEST(stm.fallback_clusters == 0u);
+  BOOST_TEST(stm.objective < st.objective);
+}
+
 // A node limit, unlike a time limit, stops every run at the same point of the search: the same result
 // on every run and with any number of threads, even when the search is cut short.
 BOOST_AUTO_TEST_CASE(node_limit_is_deterministic)
@@ -462,6 +483,36 @@ BOOST_AUTO_TEST_CASE(local_search_improves_and_keeps_parity)
   QR::internal::improve_locally(v, s, w);
   BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
   BOOST_CHECK((s == std::vector<int>{3, 3, 3, 3, 3, 3, 3, 3, 3, 3}));
+}
+
+// The solver-free heuristic alone (strip rounding, parity repair along strips, strip and cycle moves)
+// finds the optimum of layouts whose quads only need consistent strips: a grid with fractional targets
+// that vary along every strip (plain rounding makes quads irregular), and the T-junction case of
+// t_junction_case() with inconsistent targets (one strip on each side of the T-junction must change).
+BOOST_AUTO_TEST_CASE(heuristic_alone_finds_known_optima)
+{
+  std::mt19937 rng(3);
+  auto pb = make_grid(10, 8, rng, true, 0., 0.);
+  std::uniform_real_distribution<double> jitter(-0.45, 0.45);
+  for(auto& a : pb.arcs) a.target += jitter(rng);
+  std::vector<int> sf, sm;
+  const auto stf = QR::quantize_patch_sides(pb, sf, P::use_mip_solver(false));
+  BOOST_CHECK_EQUAL(odd_or_small(pb, sf), 0u);
+  BOOST_CHECK_EQUAL(stf.quad_regularity, 0.);
+#if defined(CGAL_USE_GLPK)
+  const auto stm = QR::quantize_patch_sides(pb, sm, P::maximum_number_of_nodes(std::size_t(0)));
+  BOOST_TEST_MESSAGE("  grid: heuristic " << stf.objective << ", exact " << stm.objective << " (" << stm.status.at(0) << ")");
+  BOOST_CHECK_EQUAL(stm.status.at(0), "optimal");
+  BOOST_CHECK_CLOSE(stf.objective, stm.objective, 1e-6);
+#endif
+  Side_quantization_problem t;
+  t.arcs = {{4.}, {2.}, {4.}, {2.}, {3.}, {4.}, {3.}, {5.}, {4.6}, {5.}};
+  t.arcs[4].target = 2.6;
+  t.patches = {{{0}, {1}, {2}, {3}}, {{2}, {4}, {5}, {6}}, {{7}, {8}, {9}, {4, 1}}};
+  std::vector<int> st;
+  const auto stt = QR::quantize_patch_sides(t, st, P::use_mip_solver(false));
+  BOOST_CHECK_EQUAL(odd_or_small(t, st), 0u);
+  BOOST_CHECK_CLOSE(stt.objective, brute_force(t), 1e-6);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_throws)

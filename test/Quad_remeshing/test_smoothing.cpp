@@ -175,6 +175,31 @@ BOOST_AUTO_TEST_CASE(fandisk_split_quads_improve_and_stay_on_features)
     }
 }
 
+// A time limit already reached ends the iterations after the third that always runs.
+BOOST_AUTO_TEST_CASE(time_limit_ends_the_iterations_after_a_third)
+{
+  Mesh t;
+  QR::read_and_repair(qr_test::data_file("fandisk.off"), t);
+  auto tf = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  PMP::detect_sharp_edges(t, 35., tf);
+  Mesh q;
+  decltype(get(CGAL::dynamic_edge_property_t<bool>(), q)) qf;
+  split_into_quads(t, tf, q, qf);
+  Mesh q2 = q;
+  auto qf2 = get(CGAL::dynamic_edge_property_t<bool>(), q2);
+  for(auto e : edges(q)) put(qf2, e, get(qf, e)); // same indices in the copy
+  const QR::Quad_smoothing_statistics all =
+    QR::smooth_quad_mesh(q, t, tf, CGAL::parameters::edge_is_constrained_map(qf).number_of_iterations(12));
+  BOOST_TEST(all.iterations == 12u);
+  BOOST_TEST(!all.stopped_early);
+  const QR::Quad_smoothing_statistics cut = QR::smooth_quad_mesh(
+    q2, t, tf, CGAL::parameters::edge_is_constrained_map(qf2).number_of_iterations(12).maximum_running_time(1e-9));
+  BOOST_TEST(cut.iterations == 4u);
+  BOOST_TEST(cut.stopped_early);
+  BOOST_TEST(cut.report().find("stopped_early")->boolean());
+  BOOST_TEST(min_sj(q2) > 0.);
+}
+
 BOOST_AUTO_TEST_CASE(perturbed_grid_on_a_plane_is_untangled_towards_squares)
 {
   // A 10 x 10 quad grid on the flat unit square with interior noise.

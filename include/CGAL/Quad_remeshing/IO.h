@@ -300,7 +300,9 @@ std::size_t remove_unused_points(std::vector<Point>& points, std::vector<Polygon
   @return what was found and changed
 
   @throws Bad_input if the file cannot be opened or parsed, has no face, has a non-finite coordinate,
-  an index out of range, or a face that is not a triangle; also if nothing is left after the repair.
+  an index out of range, or a face that is not a triangle; also if nothing is left after the repair, or
+  if faces with three collinear corners are left that the repair cannot collapse (no later stage can
+  work on them: `remesh_for_quadrangulation()` refuses them too).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Repair_statistics read_and_repair(const std::string& fname,
@@ -393,11 +395,15 @@ Repair_statistics read_and_repair(const std::string& fname,
 
   // Zero-area faces (collinear corners) break normals and every later stage: collapse them away.
   const std::size_t faces_before = num_faces(tmesh);
-  if(!PMP::remove_degenerate_faces(tmesh) && verbose)
-    std::cerr << "[repair] warning: some degenerate faces could not be removed\n";
+  PMP::remove_degenerate_faces(tmesh);
   tmesh.collect_garbage();
   stats.removed_degenerate_faces += faces_before - std::min(faces_before, std::size_t(num_faces(tmesh)));
   if(num_faces(tmesh) == 0) throw Bad_input("'" + fname + "': every face is degenerate");
+  std::size_t degenerate_left = 0;
+  for(auto f : faces(tmesh)) degenerate_left += PMP::is_degenerate_triangle_face(f, tmesh);
+  if(degenerate_left > 0)
+    throw Bad_input("'" + fname + "': " + std::to_string(degenerate_left) +
+                    " degenerate face(s) (three collinear corners) that the repair cannot collapse");
 
   stats.vertices = num_vertices(tmesh);
   stats.faces = num_faces(tmesh);

@@ -20,12 +20,16 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 /// weight of the advance along the field in the tracing cost, relative to the drift (`double`)
@@ -468,15 +472,58 @@ public:
     update_graph();
     std::vector<std::size_t> end_nodes;
     end_nodes.reserve(ends.size());
-    for(const Node& n : ends) end_nodes.push_back(4 * vindex_.at(n.vertex) + std::size_t(n.direction & 3));
-    auto gp = graph_.shortest_path(4 * vindex_.at(start.vertex) + std::size_t(start.direction & 3), end_nodes);
-    if(!gp || gp->vertices.size() < 2) return std::nullopt;
-    Path p;
-    for(std::size_t i = 0; i < gp->vertices.size(); ++i) {
-      p.vertices.push_back(verts_[gp->vertices[i]]);
-      if(i + 1 < gp->vertices.size()) p.directions.push_back(vframes_[gp->vertices[i]][gp->directions[i]]);
+    for(const Node& n : ends) end_nodes.push_back(node_index(n));
+    return to_path(graph_.shortest_path(node_index(start), end_nodes));
+  }
+
+  /// A search of `trace_all()`: from `start` to the first node of `*ends` reached.
+  struct Trace_job
+  {
+    Node start;
+    const std::vector<Node>* ends;
+  };
+
+  /*!
+    traces every job as `trace()` does, in up to `threads` threads (the searches are independent and their
+    results do not depend on the number of threads). `stop()` is asked before each search; once it returns
+    true, the remaining jobs get no path. Returns the paths in the order of `jobs`.
+  */
+  template <typename Stop>
+  std::vector<std::optional<Path> > trace_all(const std::vector<Trace_job>& jobs, unsigned threads, const Stop& stop)
+  {
+    update_graph();
+    std::vector<std::optional<Path> > out(jobs.size());
+    threads = (std::max)(1u, (std::min)(threads, unsigned(jobs.size())));
+    graph_.reserve_searches(threads);
+    std::atomic<std::size_t> next(0);
+    std::atomic<bool> stopped(false);
+    auto work = [&](std::size_t slot) {
+      typename internal::Direction_graph<Vector_3>::Search search;
+      std::vector<std::size_t> end_nodes;
+      for(std::size_t j; (j = next++) < jobs.size();) {
+        if(stopped || stop()) { stopped = true; break; }
+        end_nodes.clear();
+        for(const Node& n : *jobs[j].ends) end_nodes.push_back(node_index(n));
+        out[j] = to_path(graph_.shortest_path(node_index(jobs[j].start), end_nodes, search, slot));
+      }
+    };
+    if(threads == 1) work(0);
+    else {
+      std::vector<std::thread> pool;
+      std::exception_ptr failure;
+      std::mutex failure_mutex;
+      for(unsigned t = 0; t < threads; ++t)
+        pool.emplace_back([&, t]() {
+          try { work(t); } catch(...) {
+            std::lock_guard<std::mutex> lock(failure_mutex);
+            if(!failure) failure = std::current_exception();
+            stopped = true;
+          }
+        });
+      for(auto& th : pool) th.join();
+      if(failure) std::rethrow_exception(failure);
     }
-    return p;
+    return out;
   }
 
   /*!
@@ -690,6 +737,18 @@ private:
       if(dl == 0.) continue;
       vframes_[i] = internal::cross_directions(Vector_3(d / dl), n);
     }
+  }
+
+  std::size_t node_index(const Node& n) const { return 4 * vindex_.at(n.vertex) + std::size_t(n.direction & 3); }
+  std::optional<Path> to_path(const std::optional<internal::Graph_path>& gp) const
+  {
+    if(!gp || gp->vertices.size() < 2) return std::nullopt;
+    Path p;
+    for(std::size_t i = 0; i < gp->vertices.size(); ++i) {
+      p.vertices.push_back(verts_[gp->vertices[i]]);
+      if(i + 1 < gp->vertices.size()) p.directions.push_back(vframes_[gp->vertices[i]][gp->directions[i]]);
+    }
+    return p;
   }
 
   void update_graph()

@@ -19,6 +19,7 @@
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/time_budget.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
@@ -84,6 +85,17 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`35`}
     \cgalParamNEnd
+    \cgalParamNBegin{maximum_running_time}
+      \cgalParamDescription{a time limit in seconds for the whole run. The stages that can stop early get a
+                            share of the time left when they start: the layout rounds (fewer paths: patches
+                            may be less regular), the quantization solves (the best solution found, or the
+                            solver-free fallback) and the smoothing iterations. The other stages always run
+                            to their end, so a limit shorter than they take is exceeded. The report's
+                            `"time_limit"` record says whether the limit was met and what each stage gave up.
+                            With a limit the output depends on the speed and load of the machine.}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0` (no limit: the output depends on the input and the parameters only)}
+    \cgalParamNEnd
     \cgalParamNBegin{callback}
       \cgalParamDescription{called with the name of each stage when it starts}
       \cgalParamType{a callable `void(const std::string&)`}
@@ -116,6 +128,8 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const std::function<void(const std::string&)> no_callback = [](const std::string&) {};
   const auto progress = choose_parameter(get_parameter(np, CGAL::internal_np::callback), no_callback);
   const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
+  const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
+  internal::Time_budget budget(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
 
   TriangleMesh tm(tmesh);
   auto feature = get(CGAL::dynamic_edge_property_t<bool>(), tm);
@@ -140,7 +154,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
 
   progress("layout");
   Layout layout(tm, field, singularity);
-  report["layout"] = trace_patch_layout(tm, feature, layout, CGAL::parameters::verbose(verbose)).report();
+  report["layout"] = trace_patch_layout(tm, feature, layout,
+    QRP::combine(CGAL::parameters::verbose(verbose).maximum_running_time(budget.stage_limit(internal::layout_time_share)),
+                 QRP::number_of_threads(threads))).report();
+  budget.record("layout", report["layout"]);
 
   progress("quantize");
   const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
@@ -148,7 +165,9 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const std::vector<double> sizing = internal::quad_sizing(
     tm, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.));
   report["quantize"] = quantize_patch_sides(internal::quantization_problem(tm, layout, polygons, length, sizing), counts,
-    QRP::number_of_threads(choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u))).report();
+    QRP::number_of_threads(threads)
+      .maximum_running_time(budget.stage_limit(internal::quantize_time_share))).report();
+  budget.record("quantize", report["quantize"]);
   if(!sizing.empty())
     report["quantize"]["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
 
@@ -171,7 +190,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
 
   progress("smooth");
   report["smooth"] = smooth_quad_mesh(qmesh, tm, feature,
-                                      CGAL::parameters::edge_is_constrained_map(qfeature).verbose(verbose)).report();
+                                      CGAL::parameters::edge_is_constrained_map(qfeature).verbose(verbose)
+                                        .maximum_running_time(budget.stage_limit(internal::smooth_time_share))).report();
+  budget.record("smooth", report["smooth"]);
+  report["time_limit"] = budget.report();
   report["seconds"] = timer.time();
   return report;
 }

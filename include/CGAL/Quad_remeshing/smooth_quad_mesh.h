@@ -41,6 +41,7 @@ namespace Quad_remeshing {
 struct Quad_smoothing_statistics
 {
   unsigned iterations = 0;            ///< smoothing iterations done
+  bool stopped_early = false;         ///< whether `maximum_running_time` ended the iterations
   std::size_t free_vertices = 0;      ///< vertices that move on the surface
   std::size_t feature_vertices = 0;   ///< vertices that slide along a feature line
   std::size_t fixed_vertices = 0;     ///< vertices that never move (feature corners, constrained vertices)
@@ -59,6 +60,7 @@ struct Quad_smoothing_statistics
   {
     Report r = Report::object();
     r["iterations"] = iterations;
+    r["stopped_early"] = stopped_early;
     r["free_vertices"] = free_vertices;
     r["feature_vertices"] = feature_vertices;
     r["fixed_vertices"] = fixed_vertices;
@@ -240,6 +242,13 @@ struct Feature_lines
       \cgalParamType{unsigned int}
       \cgalParamDefault{`30`}
     \cgalParamNEnd
+    \cgalParamNBegin{maximum_running_time}
+      \cgalParamDescription{a time limit in seconds: once it is reached, no more smoothing iterations start
+                            after the first third of `number_of_iterations` (the untangling that follows the
+                            iterations still runs); `stopped_early` of the result says so}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0` (no limit)}
+    \cgalParamNEnd
     \cgalParamNBegin{smoothing_damping}
       \cgalParamDescription{the fraction of the way to its target a vertex moves in one iteration}
       \cgalParamType{double in (0, 1]}
@@ -286,6 +295,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   timer.start();
   Quad_smoothing_statistics stats;
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 30u);
+  const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   const double damping = choose_parameter(get_parameter(np, internal_np::smoothing_damping), 0.5);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   if(!(damping > 0. && damping <= 1.)) throw std::invalid_argument("smooth_quad_mesh: damping must be in (0, 1]");
@@ -527,6 +537,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   auto target_count = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
   for(unsigned it = 0; it < iterations; ++it)
   {
+    // a third of the iterations always run: fewer leave too many quads tangled for the untangling
+    if(time_limit > 0. && 3 * it >= iterations && timer.time() >= time_limit) { stats.stopped_early = true; break; }
     for(q_vertex v : vertices(qmesh)) { put(target_sum, v, CGAL::NULL_VECTOR); put(target_count, v, 0); }
     for(q_face f : faces(qmesh))
     {

@@ -11,6 +11,7 @@
 #include <CGAL/Quad_remeshing/parameters.h>
 
 #include <CGAL/Real_timer.h>
+#include <chrono>
 
 #include <functional>
 #include <limits>
@@ -49,6 +50,8 @@ struct Trace_patch_layout_statistics
   std::vector<Round> rounds;      ///< in the order they ran
   std::size_t removed_paths = 0;  ///< paths removed by the clean-up
   double seconds = 0.;            ///< total time
+  /// the round that reached `maximum_running_time` (the rounds after it did not run), or empty
+  std::string stopped_in_round;
 
   /// the figures as a report record
   Report report() const
@@ -65,6 +68,8 @@ struct Trace_patch_layout_statistics
     }
     r["rounds"] = a;
     r["removed_paths"] = removed_paths;
+    r["stopped_early"] = !stopped_in_round.empty();
+    if(!stopped_in_round.empty()) r["stopped_in_round"] = stopped_in_round;
     r["seconds"] = seconds;
     return r;
   }
@@ -86,6 +91,7 @@ public:
   typedef typename Layout::Node Node;
   typedef typename Layout::Patch Patch;
   typedef typename Layout::Patch_change Patch_change;
+  typedef typename Layout::Trace_job Trace_job;
   typedef typename Layout::vertex_descriptor vertex_descriptor;
   typedef typename Layout::halfedge_descriptor halfedge_descriptor;
   typedef typename Layout::face_descriptor face_descriptor;
@@ -113,6 +119,19 @@ public:
     return n;
   }
   const std::vector<std::size_t>& inserted() const { return inserted_; }
+
+  // The time limit: once it is reached, the candidate generation returns what it has traced and the
+  // insertion tries no more candidates (the rounds then end; see trace_patch_layout()).
+  void set_time_limit(double seconds)
+  {
+    limited_ = seconds > 0.;
+    if(limited_)
+      deadline_ = std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+  }
+  bool out_of_time() const { return limited_ && std::chrono::steady_clock::now() >= deadline_; }
+  // the candidate searches of a round run in up to this many threads (the same candidates for any number)
+  void set_threads(unsigned threads) { threads_ = (std::max)(1u, threads); }
 
   // The acceptance rule, in one place (paper section 5.2). A candidate that crosses no path of the layout
   // tangentially is kept when
@@ -241,7 +260,7 @@ public:
     std::priority_queue<Item, std::vector<Item>, decltype(cmp)> heap(cmp);
     for(std::size_t i = 0; i < candidates.size(); ++i) heap.push({score(candidates[i].path), i});
     std::size_t kept = 0;
-    while(!heap.empty()) {
+    while(!heap.empty() && !out_of_time()) {
       Item top = heap.top();
       heap.pop();
       const double now = score(candidates[top.second].path);
@@ -307,18 +326,21 @@ public:
   // (`opposite_ends`: to the nodes of the other starts in the opposite direction instead)
   std::vector<Candidate> trace_from(const std::vector<Start>& starts, const std::vector<Node>& ends, bool opposite_ends)
   {
-    std::vector<Candidate> out;
-    for(const Start& s : starts) {
-      std::vector<Node> e;
-      if(opposite_ends) {
+    std::vector<std::vector<Node> > own_ends(opposite_ends ? starts.size() : 0);
+    std::vector<Trace_job> jobs;
+    for(std::size_t i = 0; i < starts.size(); ++i) {
+      if(opposite_ends)
         for(const Start& t : starts)
-          if(t.v != s.v) for(int k = 0; k < 4; ++k) e.push_back(Node{t.v, k});
-      }
-      for(int k = 0; k < 4; ++k) {
-        auto c = layout_.trace(Node{s.v, k}, opposite_ends ? e : ends);
-        if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back() || !enters(*c, s.patch)) continue;
-        out.push_back(Candidate{std::move(*c), 0.});
-      }
+          if(t.v != starts[i].v) for(int k = 0; k < 4; ++k) own_ends[i].push_back(Node{t.v, k});
+      for(int k = 0; k < 4; ++k) jobs.push_back(Trace_job{Node{starts[i].v, k}, opposite_ends ? &own_ends[i] : &ends});
+    }
+    auto paths = layout_.trace_all(jobs, threads_, [this]() { return out_of_time(); });
+    std::vector<Candidate> out;
+    for(std::size_t j = 0; j < jobs.size(); ++j) {
+      auto& c = paths[j];
+      if(!c || c->vertices.size() < 2 || c->vertices.front() == c->vertices.back() || !enters(*c, starts[j / 4].patch))
+        continue;
+      out.push_back(Candidate{std::move(*c), 0.});
     }
     return out;
   }
@@ -330,7 +352,7 @@ public:
     std::vector<vertex_descriptor> samples;
     if(dist_.empty()) reset_distances();
     std::vector<double> d = dist_;
-    for(std::size_t n = 0; n < count; ++n) {
+    for(std::size_t n = 0; n < count && !out_of_time(); ++n) {
       std::size_t best = std::size_t(-1);
       for(std::size_t i = 0; i < verts_.size(); ++i) {
         const vertex_descriptor v = verts_[i];
@@ -350,15 +372,17 @@ public:
   // two loops per sample (the two field directions; the other two trace the same loops backwards)
   std::vector<Candidate> trace_loops(const std::vector<vertex_descriptor>& samples, const std::vector<Node>& extra_ends)
   {
-    std::vector<Candidate> out;
-    for(vertex_descriptor v : samples)
+    std::vector<std::vector<Node> > ends(2 * samples.size(), extra_ends);
+    std::vector<Trace_job> jobs;
+    for(std::size_t i = 0; i < samples.size(); ++i)
       for(int k = 0; k < 2; ++k) {
-        std::vector<Node> ends = extra_ends;
-        ends.push_back(Node{v, k});
-        auto c = layout_.trace(Node{v, k}, ends);
-        if(!c || c->vertices.size() < 3) continue;
-        out.push_back(Candidate{std::move(*c), 0.});
+        ends[2 * i + k].push_back(Node{samples[i], k});
+        jobs.push_back(Trace_job{Node{samples[i], k}, &ends[2 * i + k]});
       }
+    auto paths = layout_.trace_all(jobs, threads_, [this]() { return out_of_time(); });
+    std::vector<Candidate> out;
+    for(auto& c : paths)
+      if(c && c->vertices.size() >= 3) out.push_back(Candidate{std::move(*c), 0.});
     return out;
   }
 
@@ -526,6 +550,9 @@ private:
   std::vector<vertex_descriptor> verts_;
   std::vector<std::size_t> inserted_;
   std::vector<double> dist_;
+  bool limited_ = false;
+  std::chrono::steady_clock::time_point deadline_;
+  unsigned threads_ = 1;
 };
 
 } // namespace internal
@@ -584,6 +611,21 @@ private:
       \cgalParamType{`double`}
       \cgalParamDefault{`0.01`, as the original (at most 200 seeds)}
     \cgalParamNEnd
+    \cgalParamNBegin{maximum_running_time}
+      \cgalParamDescription{a time limit in seconds for the rounds: once reached, the round running stops
+                            (no more candidates are traced or tried) and the later rounds are skipped. The
+                            features and convexity rounds (most patches convex), the last resort (every
+                            patch a disk) and the clean-up always run to their end. `stopped_in_round` of the
+                            result names the round that stopped}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0` (no limit)}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_threads}
+      \cgalParamDescription{the candidate paths of a round are traced in up to this many threads (the
+                            layout does not depend on it)}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
     \cgalParamNBegin{verbose}
       \cgalParamDescription{whether to print the rounds to `std::cerr`, prefixed by `[layout]`}
       \cgalParamType{`bool`}
@@ -606,20 +648,26 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 8u);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const double loop_ratio = choose_parameter(get_parameter(np, internal_np::loop_sample_ratio), 0.01);
+  const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
 
   Trace_patch_layout_statistics stats;
   CGAL::Real_timer total;
   total.start();
   internal::Layout_tracer<Layout> tracer(layout);
+  tracer.set_threads(threads);
 
   typedef Trace_patch_layout_statistics::Round Round;
-  auto run = [&](const std::string& name, auto&& body) {
+  // a round that may stop at the time limit: skipped once it is reached, and the first one it stops is named
+  auto run = [&](const std::string& name, auto&& body, bool may_stop = true) {
+    if(may_stop && !stats.stopped_in_round.empty()) return;
     CGAL::Real_timer t;
     t.start();
     Round r;
     r.name = name;
     body(r);
     r.seconds = t.time();
+    if(may_stop && tracer.out_of_time()) stats.stopped_in_round = name;
     if(verbose)
       std::cerr << "[layout] " << name << ": " << r.candidates << " candidates, " << r.paths << " paths, "
                 << layout.statistics().valid_patches << "/" << layout.number_of_patches() << " valid patches, "
@@ -627,7 +675,7 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
     stats.rounds.push_back(r);
   };
 
-  run("features", [&](Round& r) { r.paths = layout.add_feature_paths(edge_is_feature_map); });
+  run("features", [&](Round& r) { r.paths = layout.add_feature_paths(edge_is_feature_map); }, false);
   // convexity enforcement: from left turns and U-turns, first to the opposite nodes of other bad vertices,
   // then to any boundary node (T-junctions)
   run("convexity", [&](Round& r) {
@@ -641,7 +689,10 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
       kept += tracer.insert_farthest_first(c2, r);
       if(kept == 0) break;
     }
-  });
+  }, false);
+  // The time limit applies from here: the rounds above make most patches convex (the quad patterns of a
+  // non-convex patch may fold), the ones below mostly improve the regularity.
+  if(time_limit > 0.) tracer.set_time_limit((std::max)(1e-9, time_limit - total.time()));
   run("loops", [&](Round& r) {
     // at most 200 seeds: every loop is a Dijkstra search over much of G
     const std::size_t n = (std::min)(std::size_t(200), (std::max)(std::size_t(1), std::size_t(loop_ratio * double(num_vertices(tmesh)))));
@@ -659,7 +710,7 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   // recursion: rounds restricted to each patch still invalid, the candidates stopped at its boundary;
   // between two passes, slivers are dissolved into their neighbours
   run("recursion", [&](Round& r) {
-    for(unsigned depth = 0; depth < 4 * iterations && tracer.invalid_patches() > 0; ++depth) {
+    for(unsigned depth = 0; depth < 4 * iterations && tracer.invalid_patches() > 0 && !tracer.out_of_time(); ++depth) {
       std::size_t kept = 0;
       std::vector<std::size_t> invalid;
       for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
@@ -690,7 +741,7 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
       r.paths += added;
       if(added == 0) break;
     }
-  });
+  }, false);
   stats.removed_paths = tracer.clean_up();
   stats.layout = layout.statistics();
   stats.seconds = total.time();

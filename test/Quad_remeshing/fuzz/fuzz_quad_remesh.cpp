@@ -38,13 +38,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       out << "3 " << t[3 * f] % n << ' ' << t[3 * f + 1] % n << ' ' << t[3 * f + 2] % n << '\n';
   }
   Mesh m;
+  bool refused = false;
   try {
     CGAL::Quad_remeshing::read_and_repair(path, m);
   } catch(const CGAL::Quad_remeshing::Bad_input&) {
-    std::remove(path.c_str());
-    return 0;
+    refused = true;
   }
   std::remove(path.c_str());
+  if(refused) return 0;
   const double diagonal = CGAL::Quad_remeshing::internal::bbox_diagonal(CGAL::Polygon_mesh_processing::bbox(m));
   Mesh q;
   try {

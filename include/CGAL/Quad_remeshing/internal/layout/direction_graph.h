@@ -20,6 +20,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -85,6 +86,17 @@ public:
   };
   typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property, Arc> Graph;
 
+  /// The arrays of one search, kept between searches (only the nodes a search reached are reset after it).
+  /// Searches with distinct `Search` objects and distinct spare slots may run concurrently.
+  struct Search
+  {
+    std::vector<double> dist;
+    std::vector<std::size_t> pred;
+    std::vector<boost::default_color_type> color;
+    std::vector<char> is_end;
+    std::vector<std::size_t> touched;
+  };
+
   /// `frames[v]`: the four directions at vertex `v`; `nbrs[v]`: its neighbours (ascending order for
   /// determinism); `points[v]`: its position; `singular[v]`: excluded; `blocked_edges`: set of
   /// (min,max) vertex pairs on paths; `tangent_mask[v]`: bit c set when directions of class c (k mod 2)
@@ -137,7 +149,8 @@ public:
              double length_weight)
   {
     const std::size_t nv = frames.size();
-    g_ = Graph(4 * nv + 1); // the last node is the spare source every search starts from
+    nodes_ = 4 * nv;
+    g_ = Graph(nodes_ + 1); // the nodes after the 4|V| direction nodes are the spare sources of the searches
     frames_ = &frames;
     nbrs_ = &nbrs;
     singular_ = &singular;
@@ -146,7 +159,7 @@ public:
     length_weight_ = length_weight;
     positions_.resize(nv);
     for(std::size_t i = 0; i < nv; ++i) positions_[i] = points[i] - CGAL::ORIGIN;
-    for(std::size_t u = 0; u + 1 < boost::num_vertices(g_); ++u) add_node_arcs(u);
+    for(std::size_t u = 0; u < nodes_; ++u) add_node_arcs(u);
   }
 
   /// Recomputes the arcs leaving the nodes of the vertices `vs` after the blocked edges or the tangent masks
@@ -161,14 +174,34 @@ public:
       }
   }
 
-  std::size_t number_of_nodes() const { return boost::num_vertices(g_) - 1; }
+  std::size_t number_of_nodes() const { return nodes_; }
+
+  /// Makes room for `k` concurrent searches (one spare source node each); not to be called during a search.
+  void reserve_searches(std::size_t k)
+  {
+    while(boost::num_vertices(g_) < nodes_ + k) boost::add_vertex(g_);
+  }
   std::size_t number_of_arcs() const { return boost::num_edges(g_); }
 
   /// Shortest path from `start` to the first of the nodes `ends` reached (a loop when `start` is one).
   std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends)
   {
+    return shortest_path(start, ends, search_, 0);
+  }
+
+  /// The same with the arrays `s` and the spare source `slot` (< the `k` of `reserve_searches()`): searches
+  /// with distinct arrays and slots may run in parallel threads, as long as the graph does not change.
+  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends, Search& s,
+                                          std::size_t slot)
+  {
     const std::size_t n = boost::num_vertices(g_);
-    const std::size_t spare = n - 1;
+    const std::size_t spare = nodes_ + slot;
+    if(spare >= n) throw std::logic_error("Direction_graph: no spare node for this search slot (bug)");
+    auto& dist_ = s.dist;
+    auto& pred_ = s.pred;
+    auto& color_ = s.color;
+    auto& is_end_ = s.is_end;
+    auto& touched_ = s.touched;
     // the search starts from a spare copy of the start node: the start node itself may then be an end (a loop),
     // and a start on a path vertex may leave it in a direction parallel to that path (into the patch)
     const std::size_t source = spare;
@@ -290,12 +323,8 @@ private:
   }
 
   Graph g_;
-  // search arrays kept between searches (see shortest_path())
-  std::vector<double> dist_;
-  std::vector<std::size_t> pred_;
-  std::vector<boost::default_color_type> color_;
-  std::vector<char> is_end_;
-  std::vector<std::size_t> touched_;
+  std::size_t nodes_ = 0; // the direction nodes 0 .. nodes_ - 1; the spare sources follow
+  Search search_;         // the arrays of the sequential searches
   const std::vector<std::array<Vector_3, 4>>* frames_ = nullptr;
   const std::vector<std::vector<std::size_t>>* nbrs_ = nullptr;
   const std::vector<char>* singular_ = nullptr;

@@ -6,6 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iomanip>
+#include <istream>
+#include <limits>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,6 +45,48 @@ struct Side_quantization_problem
 };
 
 namespace internal {
+
+// Plain-text form of a problem (the CLI's --dump writes it; benchmarks read it back): the number of
+// arcs, one "target fixed" line per arc (targets with 17 significant digits), the number of patches,
+// then per patch its number of sides followed, per side, by its number of arcs and their ids.
+inline void write_quantization_problem(std::ostream& out, const Side_quantization_problem& pb)
+{
+  out << std::setprecision(17) << pb.arcs.size() << "\n";
+  for(const auto& a : pb.arcs) out << a.target << " " << a.fixed << "\n";
+  out << pb.patches.size() << "\n";
+  for(const auto& patch : pb.patches) {
+    out << patch.size();
+    for(const auto& side : patch) {
+      out << "  " << side.size();
+      for(std::size_t a : side) out << " " << a;
+    }
+    out << "\n";
+  }
+}
+
+// Reads what write_quantization_problem() wrote; throws std::runtime_error on malformed input.
+inline Side_quantization_problem read_quantization_problem(std::istream& in)
+{
+  Side_quantization_problem pb;
+  std::size_t n = 0;
+  if(!(in >> n)) throw std::runtime_error("read_quantization_problem: no arc count");
+  pb.arcs.resize(n);
+  for(auto& a : pb.arcs) if(!(in >> a.target >> a.fixed)) throw std::runtime_error("read_quantization_problem: bad arc");
+  if(!(in >> n)) throw std::runtime_error("read_quantization_problem: no patch count");
+  pb.patches.resize(n);
+  for(auto& patch : pb.patches) {
+    std::size_t ns = 0;
+    if(!(in >> ns) || ns > 64) throw std::runtime_error("read_quantization_problem: bad patch");
+    patch.resize(ns);
+    for(auto& side : patch) {
+      std::size_t k = 0;
+      if(!(in >> k) || k > pb.arcs.size()) throw std::runtime_error("read_quantization_problem: bad side");
+      side.resize(k);
+      for(auto& a : side) if(!(in >> a)) throw std::runtime_error("read_quantization_problem: bad arc id");
+    }
+  }
+  return pb;
+}
 
 // Derived adjacency and the current fixed values (the clusters add fixed arcs).
 struct Quantization_view
