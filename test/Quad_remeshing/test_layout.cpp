@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -146,6 +147,28 @@ std::vector<Passage> passages(const Layout& layout, V v)
           r.push_back(Passage{p, m.source(loop[i]), m.target(loop[(i + 1) % loop.size()]), patches[p].turns[l][i]});
     }
   return r;
+}
+
+// A flat disk around the origin O: rings of radius 1..n on rays at 0 and 6 degrees, then every 30 degrees
+// from 30 to 330; O is vertex 0, the vertex of ring r (1..n) on ray j is 1 + (r-1)*13 + j.
+Mesh fan_disk(int n)
+{
+  Mesh m;
+  std::vector<double> rays{0., 6.};
+  for(int d = 30; d < 360; d += 30) rays.push_back(d);
+  const int k = int(rays.size());
+  std::vector<V> v{m.add_vertex(Point_3(0, 0, 0))};
+  for(int r = 1; r <= n; ++r)
+    for(double a : rays) v.push_back(m.add_vertex(Point_3(r * std::cos(a * CGAL_PI / 180.), r * std::sin(a * CGAL_PI / 180.), 0)));
+  auto at = [&](int r, int j) { return v[std::size_t(1 + (r - 1) * k + (j % k))]; };
+  for(int j = 0; j < k; ++j) {
+    m.add_face(v[0], at(1, j), at(1, j + 1));
+    for(int r = 1; r < n; ++r) {
+      m.add_face(at(r, j), at(r + 1, j), at(r + 1, j + 1));
+      m.add_face(at(r, j), at(r + 1, j + 1), at(r, j + 1));
+    }
+  }
+  return m;
 }
 
 } // namespace
@@ -481,13 +504,15 @@ BOOST_AUTO_TEST_CASE(fandisk_feature_patches_match_hand_check)
     for(const Passage& s : passages(layout, v)) BOOST_TEST(layout.validity(s.patch) != Layout::SATISFIED);
   }
   // 6. A spike: at (-0.144, 0.092, -0.069) a convex ridge (to r, 75.6 degrees) turns back into a concave
-  // valley (to w, 89.8 degrees); the edges are 18.5 degrees apart in one patch (measured 1.79) and 341.5
-  // apart in the other (measured -1.79); in both the field turns by 2 quarters: U_TURN on both sides.
+  // valley (to w, 89.8 degrees); the edges are 18.5 degrees apart in one passage (measured 1.79) and 341.5
+  // apart in the other (measured -1.79); in both the field turns by 2 quarters. The 18.5 degree tip between
+  // two feature lines is a corner (Patch_layout::max_tip_angle): RIGHT_TURN from w to r; the other side,
+  // which a path continuing the lines can fix, stays a U_TURN.
   {
     const V v = vertex_at(m, Point_3(-0.1437640041, 0.091902703, -0.0691067874));
     const V r = vertex_at(m, Point_3(-0.1654330194, 0.1088540033, -0.0941183865));
     const V w = vertex_at(m, Point_3(-0.1661170125, 0.0968298018, -0.0970444828));
-    BOOST_TEST((seen(v) == std::set<Seen>{{r, w, U}, {w, r, U}}), describe(v));
+    BOOST_TEST((seen(v) == std::set<Seen>{{r, w, U}, {w, r, R}}), describe(v));
   }
   // 7. A whole patch: the end face x = +0.92 is a planar quadrilateral bounded by four feature lines meeting
   // at four convex box corners like the one of check 2 (RIGHT_TURN each); the rest of its boundary is
@@ -714,6 +739,68 @@ BOOST_AUTO_TEST_CASE(local_updates_match_a_full_rebuild)
   Layout features_only(m, field, no_singularity);
   features_only.add_feature_paths(feature);
   BOOST_TEST(layout.number_of_patches() == features_only.number_of_patches());
+}
+
+// Two feature lines meeting at 6 degrees cut off a sliver whose tip no path can enter: the tip is a corner
+// (a right turn), so the sliver is a valid triangle patch. The same lines as traced paths, which the tracer
+// may remove, leave the tip a U-turn; on the other side of the tip (a patch angle of 354 degrees, where a
+// path can continue the lines) the turn stays a U-turn.
+BOOST_AUTO_TEST_CASE(feature_tip_is_a_corner)
+{
+  const int n = 4;
+  Mesh m = fan_disk(n);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  const V O(0);
+  // the two rays, one feature chain through O (feature degree two there)
+  Layout::Path lines;
+  for(int r = n; r >= 1; --r) lines.vertices.push_back(V(1 + (r - 1) * 13 + 1));
+  lines.vertices.push_back(O);
+  for(int r = 1; r <= n; ++r) lines.vertices.push_back(V(1 + (r - 1) * 13));
+  for(std::size_t i = 0; i + 1 < lines.vertices.size(); ++i) {
+    const Vector_3 d = m.point(lines.vertices[i + 1]) - m.point(lines.vertices[i]);
+    lines.directions.push_back(d / std::sqrt(d * d));
+  }
+  auto sliver_of = [&](const Layout& layout) {
+    const F f = m.face(m.halfedge(O, V(1)));
+    BOOST_REQUIRE(m.target(m.next(m.halfedge(O, V(1)))) == V(2)); // the face O, ray 0, ray 6 degrees
+    return layout.patch_id(f);
+  };
+  auto turn_at_O = [&](const Layout& layout, std::size_t patch) {
+    for(const Passage& q : passages(layout, O)) if(q.patch == patch) return q.turn;
+    BOOST_FAIL("O is not on patch " << patch);
+    return Layout::STRAIGHT;
+  };
+  for(bool feature : {true, false}) {
+    BOOST_TEST_CONTEXT("feature lines: " << feature)
+    {
+      Layout layout(m, field, no_singularity);
+      Layout::Path p = lines;
+      p.is_feature = feature;
+      // the preview sees the same turns as the layout once the path is added
+      const auto change = layout.preview_add_path(p);
+      layout.add_path(p);
+      BOOST_REQUIRE(layout.number_of_patches() == 2u);
+      BOOST_REQUIRE(change.new_patches.size() == 2u);
+      const std::size_t sliver = sliver_of(layout), other = 1 - sliver;
+      BOOST_TEST(layout.patch(sliver).faces.size() == std::size_t(2 * n - 1));
+      BOOST_TEST(turn_at_O(layout, sliver) == (feature ? Layout::RIGHT_TURN : Layout::U_TURN));
+      BOOST_TEST(turn_at_O(layout, other) == Layout::U_TURN);
+      BOOST_TEST(layout.validity(sliver) == (feature ? Layout::SATISFIED : Layout::NOT_CONVEX));
+      for(const Layout::Patch& P : change.new_patches)
+        if(P.faces.size() == layout.patch(sliver).faces.size()) BOOST_TEST(layout.validity(P) == layout.validity(sliver));
+      if(feature) {
+        BOOST_TEST(layout.patch(sliver).corners.size() == 3u);
+        BOOST_TEST(layout.patches()[sliver].sides.size() == 3u);
+      }
+    }
+  }
+  // the rounds keep the feature lines and make every patch valid
+  auto is_feature = m.add_property_map<E, bool>("e:feature", false).first;
+  for(std::size_t i = 0; i + 1 < lines.vertices.size(); ++i) is_feature[m.edge(m.halfedge(lines.vertices[i], lines.vertices[i + 1]))] = true;
+  Layout layout(m, field, no_singularity);
+  const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, is_feature, layout);
+  BOOST_TEST(s.layout.valid_patches == s.layout.patches);
+  for(E e : m.edges()) if(is_feature[e]) BOOST_TEST(layout.is_cut(e));
 }
 
 // A closed mesh with no feature line: the looped-paths round (and, if needed, the last resort) must cut it

@@ -88,7 +88,9 @@ struct Patch_layout_statistics
   a convex corner, a left turn a concave one, a U-turn a dangling path end or a spike. They are found by
   carrying the field direction of the incoming boundary edge across the faces of the fan to the outgoing
   edge (the matchings), which fixes the turn modulo a full turn, and choosing among those turns the one
-  closest to the turn measured by the angle of the fan.
+  closest to the turn measured by the angle of the fan. One exception: a sharp tip between two feature
+  paths or border edges, where the turn found is a U-turn but the angle of the patch is below
+  `max_tip_angle`, is a right turn (a corner no path can remove, see `max_tip_angle`).
 
   \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
   \tparam GeomTraits a kernel; the default is the kernel of the mesh's points
@@ -111,6 +113,14 @@ public:
 
   /// turn of a patch boundary at a vertex (paper Figure 6)
   enum Turn { STRAIGHT = 0, RIGHT_TURN, LEFT_TURN, U_TURN };
+
+  /// A boundary vertex whose turn is two or more quarter turns toward the patch (a U-turn by the field),
+  /// whose angle inside the patch is below this one (a right angle) and whose two boundary edges are both
+  /// on feature paths or on the mesh border, is a right turn: the tip between two feature lines meeting at
+  /// a small angle. No path fits into the tip and neither line may be removed, so every quad mesh keeping
+  /// both lines has a quad corner there. (A U-turn paths can fix stays one: a dangling path end, whose
+  /// patch angle is near 360 degrees, or a tip cut by a traced path.)
+  static constexpr double max_tip_angle = CGAL_PI / 2.;
 
   /// the first condition a patch fails, in the order they are checked
   enum Condition {
@@ -228,6 +238,7 @@ public:
     }
     build_vertex_frames();
     edge_paths_.assign(edges_.size(), 0);
+    edge_features_.assign(edges_.size(), 0);
     dirty_ = true;
     graph_dirty_ = true;
   }
@@ -298,6 +309,7 @@ public:
       auto e = edge(p.vertices[i], p.vertices[i + 1], tm_);
       if(!e.second) throw std::invalid_argument("Patch_layout::add_path: consecutive vertices are not adjacent");
       ++edge_paths_[eindex_.at(e.first)];
+      if(p.is_feature) ++edge_features_[eindex_.at(e.first)];
     }
     paths_.push_back(std::move(p));
     alive_.push_back(1);
@@ -310,8 +322,11 @@ public:
   {
     if(id >= paths_.size() || !alive_[id]) throw std::invalid_argument("Patch_layout::remove_path: no such path");
     const Path& p = paths_[id];
-    for(std::size_t i = 0; i + 1 < p.vertices.size(); ++i)
-      --edge_paths_[eindex_.at(edge(p.vertices[i], p.vertices[i + 1], tm_).first)];
+    for(std::size_t i = 0; i + 1 < p.vertices.size(); ++i) {
+      const std::size_t e = eindex_.at(edge(p.vertices[i], p.vertices[i + 1], tm_).first);
+      --edge_paths_[e];
+      if(p.is_feature) --edge_features_[e];
+    }
     alive_[id] = 0;
     dirty_ = graph_dirty_ = true;
   }
@@ -327,13 +342,13 @@ public:
   };
 
   /// the change the path `p` would make if it were added (the layout is left as it is)
-  Patch_change preview_add_path(const Path& p) { return preview(edge_ids(p), +1); }
+  Patch_change preview_add_path(const Path& p) { return preview(edge_ids(p), +1, p.is_feature); }
 
   /// the change removing the path `id` would make (the layout is left as it is)
   Patch_change preview_remove_path(std::size_t id)
   {
     if(id >= paths_.size() || !alive_[id]) throw std::invalid_argument("Patch_layout::preview_remove_path: no such path");
-    return preview(edge_ids(paths_[id]), -1);
+    return preview(edge_ids(paths_[id]), -1, paths_[id].is_feature);
   }
 
   /// adds the path `p` whose change `c` was computed by `preview_add_path(p)` on the current layout, updating
@@ -642,10 +657,10 @@ private:
     return ids;
   }
 
-  // Patches touched by changing the path count of `ids` by `delta`, rebuilt with that change applied: a
-  // flood fill over the faces of the touched patches only (added cuts only split them, removed cuts only
-  // join them, so no other face can be reached).
-  Patch_change preview(const std::vector<std::size_t>& ids, int delta)
+  // Patches touched by changing the path count of `ids` by `delta` (and their feature path count if
+  // `feature`), rebuilt with that change applied: a flood fill over the faces of the touched patches only
+  // (added cuts only split them, removed cuts only join them, so no other face can be reached).
+  Patch_change preview(const std::vector<std::size_t>& ids, int delta, bool feature)
   {
     update();
     Patch_change c;
@@ -654,7 +669,7 @@ private:
         if(!is_border(h, tm_)) c.old_patches.push_back(face_patch_[findex_.at(face(h, tm_))]);
     std::sort(c.old_patches.begin(), c.old_patches.end());
     c.old_patches.erase(std::unique(c.old_patches.begin(), c.old_patches.end()), c.old_patches.end());
-    for(std::size_t e : ids) edge_paths_[e] += delta;
+    for(std::size_t e : ids) { edge_paths_[e] += delta; if(feature) edge_features_[e] += delta; }
     scratch_label_.resize(faces_.size(), std::size_t(-1));
     std::vector<std::size_t> seeds;
     for(std::size_t p : c.old_patches) for(face_descriptor f : patches_[p].faces) seeds.push_back(findex_.at(f));
@@ -666,7 +681,7 @@ private:
     }
     for(Patch& P : c.new_patches) build_boundary(P);
     for(std::size_t s : seeds) scratch_label_[s] = std::size_t(-1);
-    for(std::size_t e : ids) edge_paths_[e] -= delta;
+    for(std::size_t e : ids) { edge_paths_[e] -= delta; if(feature) edge_features_[e] -= delta; }
     return c;
   }
 
@@ -810,8 +825,16 @@ private:
     return std::acos((std::max)(-1., (std::min)(1., c)));
   }
 
-  // turn at target(h) between h and the next boundary halfedge (see the class documentation)
-  Turn classify(halfedge_descriptor h) const
+  // The turn at target(h) between h and the next boundary halfedge `out` (see the class documentation), in
+  // quarter turns (positive: convex), and `fan`, the angle of the patch between h and `out` (scaled so that
+  // the full turn around a cone vertex is 2 pi).
+  struct Turn_measure
+  {
+    int quarter_turns = 0;
+    double fan = 0.;
+    halfedge_descriptor out;
+  };
+  Turn_measure measure_turn(halfedge_descriptor h) const
   {
     const halfedge_descriptor out = next_boundary(h);
     const vertex_descriptor v = target(h, tm_);
@@ -843,9 +866,21 @@ private:
     int best = t;
     for(int k = t - 8; k <= t + 8; k += 4)
       if(std::abs(k - measured) < std::abs(best - measured)) best = k;
-    if(best == 0) return STRAIGHT;
-    if(best == 1) return RIGHT_TURN;
-    if(best == -1) return LEFT_TURN;
+    return Turn_measure{best, fan, out};
+  }
+
+  // whether the edge `e` stays on a patch boundary whatever the paths: it is on a feature path or the border
+  bool is_fixed(edge_descriptor e) const { return edge_features_[eindex_.at(e)] > 0 || is_border(e, tm_); }
+
+  // The turn at target(h); a sharp tip between two fixed lines is a corner, not a U-turn (see `max_tip_angle`).
+  Turn classify(halfedge_descriptor h) const
+  {
+    const Turn_measure m = measure_turn(h);
+    if(m.quarter_turns == 0) return STRAIGHT;
+    if(m.quarter_turns == 1) return RIGHT_TURN;
+    if(m.quarter_turns == -1) return LEFT_TURN;
+    if(m.quarter_turns >= 2 && m.fan < max_tip_angle && is_fixed(edge(h, tm_)) && is_fixed(edge(m.out, tm_)))
+      return RIGHT_TURN;
     return U_TURN;
   }
 
@@ -1067,6 +1102,7 @@ private:
   std::vector<char> singular_;
   std::vector<int> singularity_index_;
   std::vector<int> edge_paths_;
+  std::vector<int> edge_features_; // number of feature paths on each edge
   std::vector<Path> paths_;
   std::vector<char> alive_;
   internal::Direction_graph<Vector_3> graph_;
