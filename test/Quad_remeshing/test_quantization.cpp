@@ -183,6 +183,28 @@ BOOST_AUTO_TEST_CASE(triangle_forces_irregular_vertex)
   BOOST_CHECK_CLOSE(objective(pent, s), brute_force(pent), 1e-6);
 }
 
+// A ring of three quads around a triangle (a valence-3 vertex inside the triangle is forced): the
+// triangle's targets 2, 2, 3 give an odd perimeter, and each quad wants its outer side equal to the
+// triangle side it faces. The optimum changes one triangle side and the outer side facing it (cost 2).
+BOOST_AUTO_TEST_CASE(ring_around_a_triangle_forces_an_irregular_vertex)
+{
+  // arcs: 0-2 the triangle's sides c_i, 3-5 the quads' outer sides o_i, 6-8 the spokes r_i between quads
+  Side_quantization_problem pb;
+  pb.arcs = {{2.}, {2.}, {3.}, {2.}, {2.}, {3.}, {2.}, {2.}, {2.}};
+  pb.patches = {{{0}, {1}, {2}},
+                {{0}, {6}, {3}, {7}}, {{1}, {7}, {4}, {8}}, {{2}, {8}, {5}, {6}}};
+  std::vector<int> s;
+  const auto st = QR::quantize_patch_sides(pb, s);
+  BOOST_CHECK_EQUAL(odd_or_small(pb, s), 0u);
+  BOOST_CHECK_CLOSE(st.objective, 2., 1e-6);
+  BOOST_CHECK_CLOSE(objective(pb, s), brute_force(pb), 1e-6);
+  for(int i = 0; i < 3; ++i) BOOST_CHECK_EQUAL(s[std::size_t(i)], s[std::size_t(3 + i)]); // every quad regular
+  // the same without the solver: the strip fallback and its moves find it too
+  std::vector<int> sf;
+  const auto stf = QR::quantize_patch_sides(pb, sf, P::use_mip_solver(false));
+  BOOST_CHECK_CLOSE(stf.objective, 2., 1e-6);
+}
+
 BOOST_AUTO_TEST_CASE(t_junction_case)
 {
   // Left: two quads A (bottom) and C (top) of height 2 and 3; right: quad B whose left side is the
