@@ -252,7 +252,8 @@ public:
 
   /*!
     adds one path per maximal chain of feature edges (chains stop at vertices where the number of incident
-    feature edges is not two, and at sharp turns of the feature lines).
+    feature edges is not two; a sharp turn inside a chain is a corner through the turn classification, not
+    a chain end).
     \tparam EdgeIsFeatureMap a readable property map, key `edge_descriptor`, value `bool`
     \return the number of paths added
   */
