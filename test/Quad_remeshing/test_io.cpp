@@ -148,6 +148,12 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
                                                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
                               "three collinear corners"));
   BOOST_TEST(throws_bad_input(write_text("io_mesh.xyz", "0 0 0\n"), "unsupported"));
+  // found by fuzzing: CGAL's reader takes the face count "170835621" out of "170835621+0.7" and allocates
+  // 4 GB for it; a negative count wraps to a huge unsigned one
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz_count.off", std::string("\0OFF\n114 170835621+0.707107 -0 0\n0 0 0\n", 39)),
+                              "cannot fit"));
+  BOOST_TEST(throws_bad_input(write_text("io_negative_count.off", "OFF\n-3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+                              "negative count"));
   // found by fuzzing: a property before any element crashed CGAL 5.5's PLY reader
   BOOST_TEST(throws_bad_input(write_text("io_fuzz1.ply",
                                          std::string("ply\nformat ascii 1.0\nel eevtmnertexj3\0\0\0y float x\n", 50)

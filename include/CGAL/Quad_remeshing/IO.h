@@ -214,9 +214,16 @@ inline std::string check_off_header(const std::string& fname)
     while(in.get(c) && !std::isspace(static_cast<unsigned char>(c)) && tok.size() < 64) tok.push_back(c);
     return !tok.empty();
   };
-  auto count = [](const std::string& t, long long& n) {
-    if(t.empty() || t.size() > 18 || t.find_first_not_of("0123456789") != std::string::npos) return false;
-    n = std::stoll(t);
+  // a count as the stream extraction of CGAL's reader takes it: an optional sign, then the leading digits
+  // (it stops at the first other character, e.g. "170835621+0.7" is 170835621); false when no digit
+  // leads (the reader fails on it). A negative count (-1) wraps to a huge unsigned one in the reader.
+  auto count = [&](const std::string& t, long long& n) {
+    const std::size_t i = (!t.empty() && (t[0] == '+' || t[0] == '-')) ? 1 : 0;
+    std::size_t j = i;
+    while(j < t.size() && std::isdigit(static_cast<unsigned char>(t[j]))) ++j;
+    if(j == i) return false;
+    if(t[0] == '-') n = -1;
+    else n = j - i > 18 ? file_size + 1 : std::stoll(t.substr(i, j - i));
     return true;
   };
   std::string keyword, tok;
@@ -244,7 +251,8 @@ inline std::string check_off_header(const std::string& fname)
   }
   if(dimensional && !next_token(tok)) return std::string();
   if(!count(tok, nv) || !next_token(tok) || !count(tok, nf)) return std::string();
-  if(6 * nv + 2 * nf > file_size)
+  if(nv < 0 || nf < 0) return "the OFF header has a negative count";
+  if(nv > file_size || nf > file_size || 6 * nv + 2 * nf > file_size)
     return "the OFF header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces cannot fit in a file of " + std::to_string(file_size) + " bytes";
   return std::string();
