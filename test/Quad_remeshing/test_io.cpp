@@ -152,6 +152,8 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
   // 4 GB for it; a negative count wraps to a huge unsigned one
   BOOST_TEST(throws_bad_input(write_text("io_fuzz_count.off", std::string("\0OFF\n114 170835621+0.707107 -0 0\n0 0 0\n", 39)),
                               "cannot fit"));
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz_keyword.off", std::string("\0OFF\xc7\n14 170835621+0.7 -0 0\n0 0 0\n", 34)),
+                              "cannot fit"));
   BOOST_TEST(throws_bad_input(write_text("io_negative_count.off", "OFF\n-3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
                               "negative count"));
   // found by fuzzing: a property before any element crashed CGAL 5.5's PLY reader

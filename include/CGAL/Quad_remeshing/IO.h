@@ -227,8 +227,9 @@ inline std::string check_off_header(const std::string& fname)
     return true;
   };
   std::string keyword, tok;
-  if(!next_token(keyword) || keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
-    return std::string();
+  // CGAL's reader accepts more than the documented keywords (e.g. "\0OFF\xc7", found by fuzzing): any first
+  // token holding "OFF" is checked
+  if(!next_token(keyword) || keyword.find("OFF") == std::string::npos) return std::string();
   const bool dimensional = keyword.find('n') != std::string::npos;
   long long nv = 0, nf = 0;
   if(!next_token(tok)) return std::string();
