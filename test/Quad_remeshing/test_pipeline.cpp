@@ -97,6 +97,21 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
   BOOST_TEST(first == run(2));
 }
 
+// spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled
+// Jacobian -0.001) that no single vertex move could open; the relaxation of its region does.
+BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("spot.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(quality.min_scaled_jacobian > 0.);
+  BOOST_TEST(r.find("smooth")->find("inverted_after")->number() == 0.);
+}
+
 // chair_doublesided (every face twice, in both orientations, many non-manifold edges) repairs into
 // thin closed sheets whose layout has patches with slits and bridges (sides that walk an arc there
 // and back): the assembly must cut them open, and the result must still be a valid quad mesh.

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 /// damping factor of each smoothing step, in (0, 1] (`double`)
@@ -213,17 +214,23 @@ struct Feature_lines
   0.3, is halved twice and then refused, so smoothing never inverts a quad (nor worsens an already bad
   one).
 
-  Before and after the smoothing iterations, quads with a scaled Jacobian <= 0 are untangled: each
-  vertex of such a quad and each of its neighbours (unless fixed) tries a few positions (the
-  average of its fitted-square corners, the average parallelogram completion of its quads, the
-  centroid of its neighbours, halfway to each, and small steps along the coordinate axes), then, if
-  one of its quads is still bad, a pattern search in the plane of its quads from the best of them
-  (eight directions, the step halved when none helps), each position projected like a smoothing
-  move, and takes the one with the fewest incident quads with a scaled Jacobian <= 0, then the
-  largest smallest scaled Jacobian, if that is strictly better than where it is. The number of such
-  quads never grows. Here and in the smoothing moves a collapsed quad (a zero-length edge, or
-  four collinear corners) counts as the worst possible quad, so that no vertex slides onto its
-  neighbour or onto the corner at the end of its feature line.
+  Before and after the smoothing iterations, poor quads (a scaled Jacobian <= 0.01: inverted, or so
+  close to collapsed that they are as bad) are untangled: each vertex of such a quad and each of its
+  neighbours (unless fixed) tries a few positions (the average of its fitted-square corners, the
+  average parallelogram completion of its quads, the centroid of its neighbours, halfway to each, and
+  small steps along the coordinate axes), then, if one of its quads is still poor, a pattern search in
+  the plane of its quads from the best of them (eight directions, the step halved when none helps),
+  each position projected like a smoothing move, and takes the best, if that is strictly better than
+  where it is. Positions are compared by the number of incident quads with a scaled Jacobian <= 0,
+  then the number of poor ones, then the smallest scaled Jacobian, so the number of inverted quads
+  never grows. What is still poor after the last untangling is relaxed by regions: the vertices within
+  one to four rings of each group of poor quads move together to the centroids of their neighbours
+  (twenty times the number of rings, the outer ring held), which unfolds quads folded onto themselves
+  that no single move can open, and then try single untangling moves again; the width whose quads score best is kept if it beats the old
+  positions, and a last untangling follows. Here and in the smoothing moves a collapsed quad (a
+  zero-length edge, or four collinear corners) counts as the worst possible quad, so that no vertex
+  slides onto its neighbour or onto the corner at the end of its feature line. A smoothing move must
+  not add a quad with a scaled Jacobian <= 0 or a poor quad.
 
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
@@ -402,15 +409,21 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // vertex's feature line. A position counts by the number of such quads around the vertex (fewer is
   // better), then by their smallest scaled Jacobian; only strict improvements are taken, so the number
   // of such quads never grows.
+  // A position is scored by its quads: first the number with a scaled Jacobian <= 0, then the number
+  // below `poor_sj` (a quad at 1e-12 is as good as collapsed: a corner at 180 degrees, or two corners
+  // on one point), then the smallest scaled Jacobian; negated counts, so that a larger tuple is better.
+  const double poor_sj = 0.01;
+  typedef std::tuple<int, int, double> Score;
+  auto add_to_score = [&](Score& score, q_face f) {
+    const double s = quad_sj(f);
+    if(s <= 0.) --std::get<0>(score);
+    if(s <= poor_sj) --std::get<1>(score);
+    std::get<2>(score) = (std::min)(std::get<2>(score), s);
+  };
   auto local_score = [&](q_vertex v) {
-    std::pair<int, double> score(0, 1.);
+    Score score(0, 0, 1.);
     for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
-      if(f != QGT::null_face())
-      {
-        const double s = quad_sj(f);
-        if(s <= 0.) --score.first; // negated, so that a larger pair is better
-        score.second = (std::min)(score.second, s);
-      }
+      if(f != QGT::null_face()) add_to_score(score, f);
     return score;
   };
   auto place = [&](q_vertex v, const Point_3& p) {
@@ -487,7 +500,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     const std::array<Vector_3, 8> directions = {{t1, -t1, t2, -t2, s2 * (t1 + t2), s2 * (t1 - t2), s2 * (t2 - t1),
                                                  -s2 * (t1 + t2)}};
     double step = 0.5 * mean_length;
-    for(int evaluations = 0; step > 1e-3 * mean_length && evaluations < 240 && best.first < 0;)
+    for(int evaluations = 0; step > 1e-3 * mean_length && evaluations < 240 && std::get<1>(best) < 0;)
     {
       bool improved = false;
       const Point_3 from = best_p;
@@ -506,7 +519,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     // quads around the previous pass's candidates
     std::vector<q_face> bad;
     for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= 0.) bad.push_back(f);
+      if(quad_sj(f) <= poor_sj) bad.push_back(f);
     for(unsigned pass = 0; pass < max_passes && !bad.empty(); ++pass)
     {
       std::vector<q_vertex> candidates;
@@ -526,12 +539,123 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       bad.clear();
       for(q_vertex v : candidates)
         for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
-          if(f != QGT::null_face() && quad_sj(f) <= 0.) bad.push_back(f);
+          if(f != QGT::null_face() && quad_sj(f) <= poor_sj) bad.push_back(f);
       std::sort(bad.begin(), bad.end());
       bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
     }
   };
   untangle(20);
+
+  // What one vertex cannot undo (a quad folded over onto itself, whose opening needs its neighbours
+  // to move too) a region can: the vertices within a few rings of a bad quad go, all together, to the
+  // centroid of their neighbours, again and again with the outer ring held (a Tutte-like relaxation,
+  // which unfolds a disk), each position put back on the surface or feature line. The region's new
+  // positions are kept only if its quads score better (fewer bad ones, then a larger smallest
+  // scaled Jacobian); wider regions are tried when a narrow one does not help.
+  auto region_score = [&](const std::vector<q_face>& region) {
+    Score score(0, 0, 1.);
+    for(q_face f : region) add_to_score(score, f);
+    return score;
+  };
+  // relaxes the vertices within `rings` rings of `seeds` (the outer ring held); returns the score of the
+  // quads around the moved vertices before and after, and puts the old positions back unless `keep`
+  auto relax_region = [&](const std::vector<q_vertex>& seeds, int rings, bool keep) {
+    std::vector<q_vertex> region, ring(seeds), movable;
+    for(int r = 0; r <= rings && !ring.empty(); ++r)
+    {
+      std::sort(ring.begin(), ring.end());
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+      std::vector<q_vertex> next;
+      for(q_vertex v : ring)
+      {
+        if(std::binary_search(region.begin(), region.end(), v)) continue;
+        if(r < rings && get(kind, v) != 2) movable.push_back(v); // the last ring holds the region
+        for(q_vertex w : vertices_around_target(halfedge(v, qmesh), qmesh)) next.push_back(w);
+      }
+      region.insert(region.end(), ring.begin(), ring.end());
+      std::sort(region.begin(), region.end());
+      region.erase(std::unique(region.begin(), region.end()), region.end());
+      ring.swap(next);
+    }
+    std::vector<q_face> quads;
+    for(q_vertex v : movable)
+      for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
+        if(f != QGT::null_face()) quads.push_back(f);
+    std::sort(quads.begin(), quads.end());
+    quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
+    const Score before = region_score(quads);
+    std::vector<Point_3> old_positions, new_positions(movable.size());
+    for(q_vertex v : movable) old_positions.push_back(get(qvpm, v));
+    for(int it = 0; it < 20 * rings; ++it)
+    {
+      for(std::size_t i = 0; i < movable.size(); ++i)
+      {
+        Vector_3 sum = CGAL::NULL_VECTOR;
+        int n = 0;
+        for(q_vertex w : vertices_around_target(halfedge(movable[i], qmesh), qmesh))
+        {
+          sum = sum + (get(qvpm, w) - CGAL::ORIGIN);
+          ++n;
+        }
+        new_positions[i] = place(movable[i], CGAL::ORIGIN + sum / double(n));
+      }
+      for(std::size_t i = 0; i < movable.size(); ++i) put(qvpm, movable[i], new_positions[i]);
+    }
+    // the relaxation opens the fold; single moves then mend what it squeezed
+    for(int pass = 0; pass < 3; ++pass)
+      for(q_vertex v : movable) untangle_vertex(v);
+    const Score after = region_score(quads);
+    if(!keep || !(after > before))
+      for(std::size_t i = 0; i < movable.size(); ++i) put(qvpm, movable[i], old_positions[i]);
+    return std::make_pair(before, after);
+  };
+  // each group of poor quads that share vertices is relaxed with the width (1 to 4 rings) that scores best
+  auto relax_tangled_regions = [&]() {
+    std::vector<q_face> poor;
+    for(q_face f : faces(qmesh))
+      if(quad_sj(f) <= poor_sj) poor.push_back(f);
+    std::sort(poor.begin(), poor.end());
+    std::vector<bool> grouped(poor.size(), false);
+    bool changed = false;
+    for(std::size_t i = 0; i < poor.size(); ++i)
+    {
+      if(grouped[i]) continue;
+      std::vector<q_face> group(1, poor[i]);
+      grouped[i] = true;
+      std::vector<q_vertex> seeds;
+      for(std::size_t k = 0; k < group.size(); ++k)
+        for(q_vertex v : vertices_around_face(halfedge(group[k], qmesh), qmesh))
+        {
+          seeds.push_back(v);
+          for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
+          {
+            const auto it = std::lower_bound(poor.begin(), poor.end(), f);
+            if(it != poor.end() && *it == f && !grouped[it - poor.begin()])
+            {
+              grouped[it - poor.begin()] = true;
+              group.push_back(f);
+            }
+          }
+        }
+      int best_rings = 0; // none yet
+      Score best;
+      for(int rings = 1; rings <= 4; ++rings)
+      {
+        const auto scores = relax_region(seeds, rings, false);
+        if(scores.second > scores.first && (best_rings == 0 || scores.second > best))
+        {
+          best = scores.second;
+          best_rings = rings;
+        }
+      }
+      if(best_rings > 0)
+      {
+        relax_region(seeds, best_rings, true);
+        changed = true;
+      }
+    }
+    return changed;
+  };
 
   auto target_sum = get(CGAL::dynamic_vertex_property_t<Vector_3>(), qmesh);
   auto target_count = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
@@ -566,7 +690,9 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       {
         put(qvpm, v, place(v, old_p + step * (target_p - old_p)));
         const auto new_score = local_score(v);
-        if(new_score.first >= old_score.first && new_score.second >= (std::min)(old_score.second, 0.3)) accepted = true;
+        if(std::get<0>(new_score) >= std::get<0>(old_score) && std::get<1>(new_score) >= std::get<1>(old_score) &&
+           std::get<2>(new_score) >= (std::min)(std::get<2>(old_score), 0.3))
+          accepted = true;
       }
       if(!accepted)
       {
@@ -577,6 +703,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     ++stats.iterations;
   }
   untangle(20);
+  if(relax_tangled_regions()) untangle(20);
   sj_figures(stats.min_scaled_jacobian_after, stats.mean_scaled_jacobian_after, stats.inverted_after);
   stats.seconds = timer.time();
   if(verbose)
