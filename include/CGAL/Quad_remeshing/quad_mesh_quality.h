@@ -201,6 +201,10 @@ void mesh_to_soup(const PolygonMesh& pmesh, VPM vpm, std::vector<Point_3>& point
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   std::unordered_map<vertex_descriptor, std::size_t> index;
+  // sized up front: grown by doubling, these arrays and their copies set the peak of the measure
+  index.reserve(std::size_t(num_vertices(pmesh)));
+  points.reserve(points.size() + std::size_t(num_vertices(pmesh)));
+  polygons.reserve(polygons.size() + std::size_t(num_faces(pmesh)));
   for(vertex_descriptor v : vertices(pmesh))
   {
     index.emplace(v, points.size());
@@ -208,8 +212,10 @@ void mesh_to_soup(const PolygonMesh& pmesh, VPM vpm, std::vector<Point_3>& point
   }
   for(auto f : faces(pmesh))
   {
+    const auto around = vertices_around_face(halfedge(f, pmesh), pmesh);
     polygons.emplace_back();
-    for(vertex_descriptor v : vertices_around_face(halfedge(f, pmesh), pmesh)) polygons.back().push_back(index.at(v));
+    polygons.back().reserve(std::size_t(std::distance(around.begin(), around.end())));
+    for(vertex_descriptor v : around) polygons.back().push_back(index.at(v));
   }
 }
 
@@ -516,7 +522,7 @@ std::vector<typename K::Segment_3> soup_creases(const std::vector<typename K::Po
   std::vector<typename K::Segment_3> creases;
   for(std::size_t e = 0; e < soup_edges.size(); ++e)
   {
-    const std::vector<Edge_use>& u = soup_edges.uses[e];
+    const Edge_uses u = soup_edges.uses(e);
     bool crease = u.size() != 2;
     if(!crease)
     {
@@ -539,8 +545,10 @@ Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, con
 {
   typedef typename K::Point_3 Point_3;
   typedef Tree_types<K> Trees;
-  const typename Trees::Triangles ttris = triangulate_soup<K>(tpts, tpolys);
-  const typename Trees::Triangles qtris = triangulate_soup<K>(qpts, qpolys);
+  // the triangles and their trees live in the Hausdorff block only, and one tree at a time: they are
+  // the largest part of the measure
+  typename Trees::Triangles ttris = triangulate_soup<K>(tpts, tpolys);
+  typename Trees::Triangles qtris = triangulate_soup<K>(qpts, qpolys);
   if(ttris.empty()) throw std::invalid_argument("feature_fidelity: the input mesh has no face with non-zero area");
   if(qpolys.empty()) throw std::invalid_argument("feature_fidelity: the output mesh has no face");
 
@@ -554,16 +562,18 @@ Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, con
 
   // Hausdorff distance, both directions
   {
-    typename Trees::Triangle_tree ttree(ttris.begin(), ttris.end());
-    ttree.accelerate_distance_queries();
     One_sided_distance qt;
-    if(qtris.empty())
     {
-      // a flat output has no area: only its vertices can be measured
-      qt = one_sided_distance<K>(qpts, qpolys, qtris, ttree, 0, settings.seed, settings.threads);
+      typename Trees::Triangle_tree ttree(ttris.begin(), ttris.end());
+      ttree.accelerate_distance_queries();
+      if(qtris.empty())
+      {
+        // a flat output has no area: only its vertices can be measured
+        qt = one_sided_distance<K>(qpts, qpolys, qtris, ttree, 0, settings.seed, settings.threads);
+      }
+      else
+        qt = one_sided_distance<K>(qpts, qpolys, qtris, ttree, settings.n_samples, settings.seed, settings.threads);
     }
-    else
-      qt = one_sided_distance<K>(qpts, qpolys, qtris, ttree, settings.n_samples, settings.seed, settings.threads);
     One_sided_distance tq;
     if(!qtris.empty())
     {
@@ -587,11 +597,14 @@ Feature_fidelity soup_fidelity(const std::vector<typename K::Point_3>& tpts, con
     r.input_samples = tq.area_samples + tq.vertex_samples;
     r.output_samples = qt.area_samples + qt.vertex_samples;
   }
+  typename Trees::Triangles().swap(ttris);
+  typename Trees::Triangles().swap(qtris);
 
   // coverage of the feature lines by the output's edges
   {
     typename Trees::Segments qedges;
     const Soup_edges qsoup_edges(qpts.size(), qpolys);
+    qedges.reserve(qsoup_edges.size());
     for(const auto& e : qsoup_edges.ends)
     {
       typename K::Segment_3 s(qpts[e.first], qpts[e.second]);

@@ -38,6 +38,9 @@ std::vector<typename K::Triangle_3> triangulate_soup(const std::vector<typename 
   typedef typename K::Point_3 Point_3;
   typedef typename K::Triangle_3 Triangle_3;
   std::vector<Triangle_3> out;
+  std::size_t n = 0; // an upper bound: zero-area triangles are dropped
+  for(const std::vector<std::size_t>& f : polygons) n += f.size() < 3 ? 0 : f.size() - 2;
+  out.reserve(n);
   auto add = [&](const Point_3& a, const Point_3& b, const Point_3& c) {
     Triangle_3 t(a, b, c);
     if(!t.is_degenerate()) out.push_back(t);

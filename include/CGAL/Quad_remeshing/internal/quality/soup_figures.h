@@ -52,17 +52,32 @@ struct Edge_use
   bool forward;  // traversed from the smaller to the larger vertex index
 };
 
+// The uses of one edge: a range of `Soup_edges::use_list`.
+struct Edge_uses
+{
+  const Edge_use* first;
+  const Edge_use* last;
+  std::size_t size() const { return std::size_t(last - first); }
+  const Edge_use& operator[](std::size_t i) const { return first[i]; }
+};
+
 // The unique undirected edges of a soup (sides joining two equal indices are ignored: they belong
 // to degenerate faces and have no length) with the polygons that use them.
 struct Soup_edges
 {
   std::vector<std::pair<std::size_t, std::size_t>> ends; // (smaller, larger) index
-  std::vector<std::vector<Edge_use>> uses;
+  // the uses of edge e are use_list[use_begin[e]], ..., use_list[use_begin[e + 1] - 1]: flat arrays
+  // rather than a vector per edge, which took most of the memory of the measure of a large mesh
+  std::vector<Edge_use> use_list;
+  std::vector<std::size_t> use_begin;
 
   Soup_edges(std::size_t nv, const Index_polygons& polygons)
   {
     // sort the sides by key: deterministic numbering without hashing
-    std::vector<std::array<std::size_t, 4>> sides; // a, b, face, forward
+    std::vector<std::array<std::size_t, 3>> sides; // a, b, 2 face + forward (the order of a, b, face, forward)
+    std::size_t n = 0;
+    for(const std::vector<std::size_t>& p : polygons) n += p.size();
+    sides.reserve(n);
     for(std::size_t f = 0; f < polygons.size(); ++f)
     {
       const std::vector<std::size_t>& p = polygons[f];
@@ -70,23 +85,29 @@ struct Soup_edges
       {
         const std::size_t a = p[i], b = p[(i + 1) % p.size()];
         if(a == b) continue;
-        sides.push_back({std::min(a, b), std::max(a, b), f, std::size_t(a < b)});
+        sides.push_back({std::min(a, b), std::max(a, b), 2 * f + std::size_t(a < b)});
       }
     }
     std::sort(sides.begin(), sides.end());
+    use_list.reserve(sides.size());
     for(std::size_t i = 0; i < sides.size(); ++i)
     {
       if(i == 0 || sides[i][0] != sides[i - 1][0] || sides[i][1] != sides[i - 1][1])
       {
         ends.emplace_back(sides[i][0], sides[i][1]);
-        uses.emplace_back();
+        use_begin.push_back(use_list.size());
       }
-      uses.back().push_back(Edge_use{sides[i][2], sides[i][3] != 0});
+      use_list.push_back(Edge_use{sides[i][2] / 2, (sides[i][2] & 1) != 0});
     }
+    use_begin.push_back(use_list.size());
     (void)nv;
   }
 
   std::size_t size() const { return ends.size(); }
+  Edge_uses uses(std::size_t e) const
+  {
+    return Edge_uses{use_list.data() + use_begin[e], use_list.data() + use_begin[e + 1]};
+  }
 };
 
 // True when every corner of the closed polygon `point(0)`, ..., `point(n - 1)` is flat: the cross product
@@ -233,7 +254,7 @@ Soup_figures compute_soup_figures(const std::vector<Point_3>& pts, const Index_p
   Union_find boundary_sets(nv);
   for(std::size_t e = 0; e < edges.size(); ++e)
   {
-    const std::vector<Edge_use>& u = edges.uses[e];
+    const Edge_uses u = edges.uses(e);
     const std::size_t a = edges.ends[e].first, b = edges.ends[e].second;
     ++valence[a];
     ++valence[b];
@@ -276,32 +297,48 @@ Soup_figures compute_soup_figures(const std::vector<Point_3>& pts, const Index_p
   // Non-manifold vertices: the faces around a vertex must form a single fan, i.e. be connected
   // through edges incident to that vertex.
   {
-    std::vector<std::vector<std::size_t>> vertex_faces(nv);
-    for(std::size_t f = 0; f < polygons.size(); ++f)
-      for(std::size_t v : polygons[f])
-        if(vertex_faces[v].empty() || vertex_faces[v].back() != f) vertex_faces[v].push_back(f);
-    std::vector<std::vector<std::size_t>> vertex_edges(nv);
+    // the faces and the edges around every vertex, as flat arrays (a vector per vertex took more memory
+    // than the soup)
+    std::vector<std::size_t> face_begin(nv + 1, 0), edge_begin(nv + 1, 0);
+    for(const std::vector<std::size_t>& p : polygons)
+      for(std::size_t v : p) ++face_begin[v + 1];
     for(std::size_t e = 0; e < edges.size(); ++e)
     {
-      vertex_edges[edges.ends[e].first].push_back(e);
-      vertex_edges[edges.ends[e].second].push_back(e);
+      ++edge_begin[edges.ends[e].first + 1];
+      ++edge_begin[edges.ends[e].second + 1];
+    }
+    std::partial_sum(face_begin.begin(), face_begin.end(), face_begin.begin());
+    std::partial_sum(edge_begin.begin(), edge_begin.end(), edge_begin.begin());
+    std::vector<std::size_t> vertex_faces(face_begin[nv]), vertex_edges(edge_begin[nv]);
+    {
+      std::vector<std::size_t> fill(face_begin.begin(), face_begin.end() - 1);
+      for(std::size_t f = 0; f < polygons.size(); ++f)
+        for(std::size_t v : polygons[f]) vertex_faces[fill[v]++] = f;
+      fill.assign(edge_begin.begin(), edge_begin.end() - 1);
+      for(std::size_t e = 0; e < edges.size(); ++e)
+      {
+        vertex_edges[fill[edges.ends[e].first]++] = e;
+        vertex_edges[fill[edges.ends[e].second]++] = e;
+      }
     }
     for(std::size_t v = 0; v < nv; ++v)
     {
-      std::vector<std::size_t>& fs = vertex_faces[v];
-      std::sort(fs.begin(), fs.end());
-      fs.erase(std::unique(fs.begin(), fs.end()), fs.end());
-      if(fs.size() < 2) continue;
-      Union_find fans(fs.size());
-      for(std::size_t e : vertex_edges[v])
+      const auto fb = vertex_faces.begin() + std::ptrdiff_t(face_begin[v]);
+      auto fe = vertex_faces.begin() + std::ptrdiff_t(face_begin[v + 1]);
+      std::sort(fb, fe);
+      fe = std::unique(fb, fe);
+      const std::size_t n_faces = std::size_t(fe - fb);
+      if(n_faces < 2) continue;
+      Union_find fans(n_faces);
+      for(std::size_t i = edge_begin[v]; i < edge_begin[v + 1]; ++i)
       {
-        const std::vector<Edge_use>& u = edges.uses[e];
-        const std::size_t i0 = std::size_t(std::lower_bound(fs.begin(), fs.end(), u[0].face) - fs.begin());
+        const Edge_uses u = edges.uses(vertex_edges[i]);
+        const std::size_t i0 = std::size_t(std::lower_bound(fb, fe, u[0].face) - fb);
         for(std::size_t k = 1; k < u.size(); ++k)
-          fans.join(i0, std::size_t(std::lower_bound(fs.begin(), fs.end(), u[k].face) - fs.begin()));
+          fans.join(i0, std::size_t(std::lower_bound(fb, fe, u[k].face) - fb));
       }
       std::size_t n_fans = 0;
-      for(std::size_t i = 0; i < fs.size(); ++i)
+      for(std::size_t i = 0; i < n_faces; ++i)
         if(fans.find(i) == i) ++n_fans;
       if(n_fans > 1) ++r.non_manifold_vertices;
     }
