@@ -460,7 +460,10 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     if(get(edge_is_feature_map, e)) ++st.feature_edges_before;
   }
 
-  // the input surface, its feature lines and its vertices: projections and distances
+  // the input surface, its feature lines and its vertices: projections and distances. Without the
+  // adaptive pass only the surface is used (by the final splitting), and its tree is built after the
+  // uniform pass, so that it does not add to the peak memory of isotropic_remeshing() (which builds
+  // its own trees of the input)
   internal::Remeshing_reference<GT> reference;
   reference.triangles.reserve(st.faces_before);
   for(face_descriptor f : faces(tmesh))
@@ -469,12 +472,16 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     reference.triangles.emplace_back(get(vpm, source(h, tmesh)), get(vpm, target(h, tmesh)),
                                      get(vpm, target(next(h, tmesh), tmesh)));
   }
-  for(auto e : edges(tmesh))
-    if(get(edge_is_feature_map, e))
-      reference.feature_segments.emplace_back(get(vpm, source(halfedge(e, tmesh), tmesh)),
-                                              get(vpm, target(halfedge(e, tmesh), tmesh)));
-  for(vertex_descriptor v : vertices(tmesh)) reference.points.push_back(get(vpm, v));
-  reference.build();
+  if(adaptive)
+  {
+    for(auto e : edges(tmesh))
+      if(get(edge_is_feature_map, e))
+        reference.feature_segments.emplace_back(get(vpm, source(halfedge(e, tmesh), tmesh)),
+                                                get(vpm, target(halfedge(e, tmesh), tmesh)));
+    reference.points.reserve(st.vertices_before);
+    for(vertex_descriptor v : vertices(tmesh)) reference.points.push_back(get(vpm, v));
+    reference.build();
+  }
   const CGAL::Bbox_3 box = PMP::bbox(tmesh, CGAL::parameters::vertex_point_map(vpm));
   const double diagonal = internal::bbox_diagonal(box);
 
@@ -513,7 +520,10 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   std::vector<typename GT::Point_3> line_points;
   std::vector<typename GT::Segment_3> held_segments;
   if(!adaptive)
+  {
     PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remesh_np);
+    reference.build_surface();
+  }
   else
   {
     const double cos_sharp = std::cos(sharp_angle * CGAL_PI / 180.);

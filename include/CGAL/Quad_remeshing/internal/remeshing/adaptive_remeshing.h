@@ -43,10 +43,15 @@ struct Remeshing_reference
   Tri_tree surface;
   Seg_tree features;
 
-  void build()
+  void build_surface()
   {
     surface.rebuild(triangles.begin(), triangles.end());
     surface.accelerate_distance_queries();
+  }
+
+  void build()
+  {
+    build_surface();
     if(!feature_segments.empty())
     {
       features.rebuild(feature_segments.begin(), feature_segments.end());
