@@ -392,15 +392,25 @@ Repair_statistics read_and_repair(const std::string& fname,
   if(polygons.empty()) throw Bad_input("'" + fname + "': no valid face is left after removing degenerate faces");
 
   const std::size_t points_before_orientation = points.size();
-  const std::vector<Polygon> polygons_before = polygons;
+  // every polygon is a triangle: a flat copy is enough to see what the orientation changed
+  std::vector<std::array<std::size_t, 3>> polygons_before;
+  polygons_before.reserve(polygons.size());
+  for(const Polygon& p : polygons) polygons_before.push_back({p[0], p[1], p[2]});
   PMP::orient_polygon_soup(points, polygons);
   stats.duplicated_points = points.size() - points_before_orientation;
-  stats.orientation_changed = (polygons != polygons_before);
+  stats.orientation_changed = polygons.size() != polygons_before.size();
+  for(std::size_t f = 0; f < polygons.size() && !stats.orientation_changed; ++f)
+    stats.orientation_changed = polygons[f].size() != 3 || polygons[f][0] != polygons_before[f][0] ||
+                                polygons[f][1] != polygons_before[f][1] || polygons[f][2] != polygons_before[f][2];
+  std::vector<std::array<std::size_t, 3>>().swap(polygons_before);
 
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
     throw Bad_input("'" + fname + "': the faces cannot be turned into a manifold mesh even after repair");
   clear(tmesh);
   PMP::polygon_soup_to_polygon_mesh(points, polygons, tmesh);
+  // the soup is no longer needed: free it before the mesh repair and the figures
+  std::vector<Point>().swap(points);
+  std::vector<Polygon>().swap(polygons);
 
   // Zero-area faces (collinear corners) break normals and every later stage: collapse them away.
   const std::size_t faces_before = num_faces(tmesh);
