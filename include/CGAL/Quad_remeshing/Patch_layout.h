@@ -470,11 +470,7 @@ public:
   */
   std::optional<Path> trace(const Node& start, const std::vector<Node>& ends)
   {
-    update_graph();
-    std::vector<std::size_t> end_nodes;
-    end_nodes.reserve(ends.size());
-    for(const Node& n : ends) end_nodes.push_back(node_index(n));
-    return to_path(graph_.shortest_path(node_index(start), end_nodes));
+    return std::move(trace_all({Trace_job{start, &ends}}, 1, []() { return false; }).front());
   }
 
   /// A search of `trace_all()`: from `start` to the first node of `*ends` reached.
@@ -498,14 +494,14 @@ public:
     graph_.reserve_searches(threads);
     std::atomic<std::size_t> next(0);
     std::atomic<bool> stopped(false);
+    // every slot searches with the arrays G keeps for it between calls (reset where the last search went)
     auto work = [&](std::size_t slot) {
-      typename internal::Direction_graph<Vector_3>::Search search;
       std::vector<std::size_t> end_nodes;
       for(std::size_t j; (j = next++) < jobs.size();) {
         if(stopped || stop()) { stopped = true; break; }
         end_nodes.clear();
         for(const Node& n : *jobs[j].ends) end_nodes.push_back(node_index(n));
-        out[j] = to_path(graph_.shortest_path(node_index(jobs[j].start), end_nodes, search, slot));
+        out[j] = to_path(graph_.shortest_path(node_index(jobs[j].start), end_nodes, slot));
       }
     };
     if(threads == 1) work(0);

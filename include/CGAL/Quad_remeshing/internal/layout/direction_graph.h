@@ -86,17 +86,6 @@ public:
   };
   typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property, Arc> Graph;
 
-  /// The arrays of one search, kept between searches (only the nodes a search reached are reset after it).
-  /// Searches with distinct `Search` objects and distinct spare slots may run concurrently.
-  struct Search
-  {
-    std::vector<double> dist;
-    std::vector<std::size_t> pred;
-    std::vector<boost::default_color_type> color;
-    std::vector<char> is_end;
-    std::vector<std::size_t> touched;
-  };
-
   /// `frames[v]`: the four directions at vertex `v`; `nbrs[v]`: its neighbours (ascending order for
   /// determinism); `points[v]`: its position; `singular[v]`: excluded; `blocked_edges`: set of
   /// (min,max) vertex pairs on paths; `tangent_mask[v]`: bit c set when directions of class c (k mod 2)
@@ -176,27 +165,25 @@ public:
 
   std::size_t number_of_nodes() const { return nodes_; }
 
-  /// Makes room for `k` concurrent searches (one spare source node each); not to be called during a search.
+  /// Makes room for `k` concurrent searches (a spare source node and the search arrays of each slot); not to
+  /// be called during a search.
   void reserve_searches(std::size_t k)
   {
     while(boost::num_vertices(g_) < nodes_ + k) boost::add_vertex(g_);
+    if(searches_.size() < k) searches_.resize(k);
   }
   std::size_t number_of_arcs() const { return boost::num_edges(g_); }
 
-  /// Shortest path from `start` to the first of the nodes `ends` reached (a loop when `start` is one).
-  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends)
-  {
-    return shortest_path(start, ends, search_, 0);
-  }
-
-  /// The same with the arrays `s` and the spare source `slot` (< the `k` of `reserve_searches()`): searches
-  /// with distinct arrays and slots may run in parallel threads, as long as the graph does not change.
-  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends, Search& s,
-                                          std::size_t slot)
+  /// Shortest path from `start` to the first of the nodes `ends` reached (a loop when `start` is one), with
+  /// the spare source and the arrays of `slot` (< the `k` of `reserve_searches()`): searches in distinct slots
+  /// may run in parallel threads, as long as the graph does not change.
+  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends, std::size_t slot)
   {
     const std::size_t n = boost::num_vertices(g_);
     const std::size_t spare = nodes_ + slot;
-    if(spare >= n) throw std::logic_error("Direction_graph: no spare node for this search slot (bug)");
+    if(spare >= n || slot >= searches_.size())
+      throw std::logic_error("Direction_graph: no spare node for this search slot (bug)");
+    Search& s = searches_[slot];
     auto& dist_ = s.dist;
     auto& pred_ = s.pred;
     auto& color_ = s.color;
@@ -234,6 +221,11 @@ public:
                                              boost::make_iterator_property_map(color_.begin(), index));
     } catch(const Dijkstra_end_reached& r) {
       reached = r.node;
+    } catch(...) {
+      // the arrays persist: left dirty, they are initialised again by the next search of this slot
+      s.dist.clear();
+      boost::clear_out_edges(spare, g_);
+      throw;
     }
     boost::clear_out_edges(spare, g_);
     std::vector<std::size_t> nodes;
@@ -276,6 +268,17 @@ public:
   }
 
 private:
+  // The arrays of the searches of one slot, kept between searches (only the nodes a search reached are reset
+  // after it).
+  struct Search
+  {
+    std::vector<double> dist;
+    std::vector<std::size_t> pred;
+    std::vector<boost::default_color_type> color;
+    std::vector<char> is_end;
+    std::vector<std::size_t> touched;
+  };
+
   std::vector<Hop> hops_of(std::size_t u) const
   {
     const std::size_t i = u / 4;
@@ -324,7 +327,7 @@ private:
 
   Graph g_;
   std::size_t nodes_ = 0; // the direction nodes 0 .. nodes_ - 1; the spare sources follow
-  Search search_;         // the arrays of the sequential searches
+  std::vector<Search> searches_; // one per search slot
   const std::vector<std::array<Vector_3, 4>>* frames_ = nullptr;
   const std::vector<std::vector<std::size_t>>* nbrs_ = nullptr;
   const std::vector<char>* singular_ = nullptr;
