@@ -473,11 +473,15 @@ public:
     return std::move(trace_all({Trace_job{start, &ends}}, 1, []() { return false; }).front());
   }
 
-  /// A search of `trace_all()`: from `start` to the first node of `*ends` reached.
+  /// A search of `trace_all()`: from `start` to the first end node reached. The ends are the nodes of `*ends`
+  /// and, when `loop`, `start` itself, but none of the nodes of `start.vertex` when `skip_start_vertex`. Jobs
+  /// may share one list `*ends`.
   struct Trace_job
   {
     Node start;
     const std::vector<Node>* ends;
+    bool loop = false;              ///< `start` is an end too: the path is then a loop
+    bool skip_start_vertex = false; ///< the nodes of `start.vertex` in `*ends` are not ends
   };
 
   /*!
@@ -499,9 +503,11 @@ public:
       std::vector<std::size_t> end_nodes;
       for(std::size_t j; (j = next++) < jobs.size();) {
         if(stopped || stop()) { stopped = true; break; }
+        const Trace_job& job = jobs[j];
         end_nodes.clear();
-        for(const Node& n : *jobs[j].ends) end_nodes.push_back(node_index(n));
-        out[j] = to_path(graph_.shortest_path(node_index(jobs[j].start), end_nodes, slot));
+        for(const Node& n : *job.ends) end_nodes.push_back(node_index(n));
+        const std::size_t skip = job.skip_start_vertex ? vindex_.at(job.start.vertex) : std::size_t(-1);
+        out[j] = to_path(graph_.shortest_path(node_index(job.start), end_nodes, job.loop, skip, slot));
       }
     };
     if(threads == 1) work(0);

@@ -323,17 +323,17 @@ public:
   }
 
   // traces from every direction of every start that enters its patch, to the first node of `ends`
-  // (`opposite_ends`: to the nodes of the other starts in the opposite direction instead)
+  // (`opposite_ends`: to the nodes of the other starts' vertices instead, every direction)
   std::vector<Candidate> trace_from(const std::vector<Start>& starts, const std::vector<Node>& ends, bool opposite_ends)
   {
-    std::vector<std::vector<Node> > own_ends(opposite_ends ? starts.size() : 0);
+    // one list of the nodes of all starts, each search skipping its own start's vertex: O(S) memory, not O(S^2)
+    std::vector<Node> start_nodes;
+    if(opposite_ends)
+      for(const Start& t : starts) for(int k = 0; k < 4; ++k) start_nodes.push_back(Node{t.v, k});
     std::vector<Trace_job> jobs;
-    for(std::size_t i = 0; i < starts.size(); ++i) {
-      if(opposite_ends)
-        for(const Start& t : starts)
-          if(t.v != starts[i].v) for(int k = 0; k < 4; ++k) own_ends[i].push_back(Node{t.v, k});
-      for(int k = 0; k < 4; ++k) jobs.push_back(Trace_job{Node{starts[i].v, k}, opposite_ends ? &own_ends[i] : &ends});
-    }
+    for(const Start& s : starts)
+      for(int k = 0; k < 4; ++k)
+        jobs.push_back(Trace_job{Node{s.v, k}, opposite_ends ? &start_nodes : &ends, false, opposite_ends});
     auto paths = layout_.trace_all(jobs, threads_, [this]() { return out_of_time(); });
     std::vector<Candidate> out;
     for(std::size_t j = 0; j < jobs.size(); ++j) {
@@ -369,16 +369,13 @@ public:
     return samples;
   }
 
-  // two loops per sample (the two field directions; the other two trace the same loops backwards)
+  // two loops per sample (the two field directions; the other two trace the same loops backwards), each
+  // ending at its start or at the first node of `extra_ends` reached
   std::vector<Candidate> trace_loops(const std::vector<vertex_descriptor>& samples, const std::vector<Node>& extra_ends)
   {
-    std::vector<std::vector<Node> > ends(2 * samples.size(), extra_ends);
     std::vector<Trace_job> jobs;
-    for(std::size_t i = 0; i < samples.size(); ++i)
-      for(int k = 0; k < 2; ++k) {
-        ends[2 * i + k].push_back(Node{samples[i], k});
-        jobs.push_back(Trace_job{Node{samples[i], k}, &ends[2 * i + k]});
-      }
+    for(vertex_descriptor v : samples)
+      for(int k = 0; k < 2; ++k) jobs.push_back(Trace_job{Node{v, k}, &extra_ends, true});
     auto paths = layout_.trace_all(jobs, threads_, [this]() { return out_of_time(); });
     std::vector<Candidate> out;
     for(auto& c : paths)

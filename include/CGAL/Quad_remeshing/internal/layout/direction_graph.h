@@ -46,14 +46,14 @@ template <typename EndFlags>
 struct Stop_at_end_visitor : public boost::default_dijkstra_visitor
 {
   const EndFlags* is_end;
-  std::size_t skip; // the start node of a loop is the end, but not at distance 0
+  std::size_t skip_vertex; // its four nodes are no ends: one end list serves searches that skip their own start
   std::vector<std::size_t>* touched; // every node the search reached, to reset the search arrays
   template <typename G>
   void discover_vertex(std::size_t u, const G&) const { touched->push_back(u); }
   template <typename G>
   void examine_vertex(std::size_t u, const G&) const
   {
-    if(u != skip && (*is_end)[u]) throw Dijkstra_end_reached{u};
+    if((*is_end)[u] && u / 4 != skip_vertex) throw Dijkstra_end_reached{u};
   }
 };
 
@@ -174,10 +174,12 @@ public:
   }
   std::size_t number_of_arcs() const { return boost::num_edges(g_); }
 
-  /// Shortest path from `start` to the first of the nodes `ends` reached (a loop when `start` is one), with
-  /// the spare source and the arrays of `slot` (< the `k` of `reserve_searches()`): searches in distinct slots
-  /// may run in parallel threads, as long as the graph does not change.
-  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends, std::size_t slot)
+  /// Shortest path from `start` to the first end node reached. The ends are the nodes `ends` and, when `loop`,
+  /// `start` itself (the path is then a loop), but no node of the vertex `skip_vertex` (-1: none). The search
+  /// uses the spare source and the arrays of `slot` (< the `k` of `reserve_searches()`): searches in distinct
+  /// slots may run in parallel threads, as long as the graph does not change.
+  std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends, bool loop,
+                                          std::size_t skip_vertex, std::size_t slot)
   {
     const std::size_t n = boost::num_vertices(g_);
     const std::size_t spare = nodes_ + slot;
@@ -205,10 +207,11 @@ public:
       is_end_.assign(n, 0);
     }
     for(std::size_t e : ends) is_end_[e] = 1;
+    if(loop) is_end_[start] = 1;
     touched_.clear();
     Stop_at_end_visitor<std::vector<char>> vis;
     vis.is_end = &is_end_;
-    vis.skip = source;
+    vis.skip_vertex = skip_vertex;
     vis.touched = &touched_;
     dist_[source] = 0.;
     std::optional<std::size_t> reached;
@@ -244,6 +247,7 @@ public:
       color_[u] = boost::white_color;
     }
     for(std::size_t e : ends) is_end_[e] = 0;
+    is_end_[start] = 0;
     if(!reached) return std::nullopt;
 
     nodes.back() = start;
