@@ -154,6 +154,14 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
                               "cannot fit"));
   BOOST_TEST(throws_bad_input(write_text("io_fuzz_keyword.off", std::string("\0OFF\xc7\n14 170835621+0.7 -0 0\n0 0 0\n", 34)),
                               "cannot fit"));
+  // found by a long fuzzing run: CGAL reads the word after the keyword as letters and digits, so
+  // "BINARY\x03..." switches to binary counts after the end of that line (here "& 1 " is 639 million
+  // vertices, 1.9 GB before the reader failed)
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz_binary.off",
+                                         std::string("OFF\n\x0c" "BINARY\x03solid 3 4\n& 1 4 \xe4\xe4\xe4\xe4\n\n", 34)),
+                              "cannot fit"));
+  BOOST_TEST(throws_bad_input(write_text("io_binary_negative.off", std::string("OFF BINARY\n\xff\xff\xff\xfd\0\0\0\1\0\0\0\0", 23)),
+                              "negative count"));
   BOOST_TEST(throws_bad_input(write_text("io_negative_count.off", "OFF\n-3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
                               "negative count"));
   // found by fuzzing: a property before any element crashed CGAL 5.5's PLY reader

@@ -232,9 +232,20 @@ inline std::string check_off_header(const std::string& fname)
   if(!next_token(keyword) || keyword.find("OFF") == std::string::npos) return std::string();
   const bool dimensional = keyword.find('n') != std::string::npos;
   long long nv = 0, nf = 0;
-  if(!next_token(tok)) return std::string();
-  if(tok == "BINARY") {
-    if(in.peek() == '\n') in.get(); // CGAL skips the rest of the keyword line
+  // CGAL reads the word after the keyword as letters and digits only: "BINARY\x03..." is BINARY too; when
+  // the character that ends the word is not a newline, the rest of that line is skipped
+  std::string word;
+  char c = 0;
+  while(in.get(c)) {
+    if(c == '#') { std::string rest; std::getline(in, rest); continue; }
+    if(!std::isspace(static_cast<unsigned char>(c))) break;
+  }
+  if(!in) return std::string();
+  const std::streampos word_start = in.tellg() - std::streamoff(1);
+  word.push_back(c);
+  while(word.size() < 64 && in.get(c) && std::isalnum(static_cast<unsigned char>(c))) word.push_back(c);
+  if(word == "BINARY") {
+    if(in && c != '\n') { std::string rest; std::getline(in, rest); }
     auto read32 = [&](long long& n) {
       unsigned char b[4];
       if(!in.read(reinterpret_cast<char*>(b), 4)) return false;
@@ -244,12 +255,15 @@ inline std::string check_off_header(const std::string& fname)
     };
     long long dim = 0;
     if((dimensional && !read32(dim)) || !read32(nv) || !read32(nf)) return std::string();
-    if(nv < 0 || nf < 0) return std::string();
+    if(nv < 0 || nf < 0) return "the OFF header has a negative count";
     if(12 * nv + 4 * nf > file_size)
       return "the OFF header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
              " faces cannot fit in a file of " + std::to_string(file_size) + " bytes";
     return std::string();
   }
+  in.clear();
+  in.seekg(word_start);
+  if(!next_token(tok)) return std::string();
   if(dimensional && !next_token(tok)) return std::string();
   if(!count(tok, nv) || !next_token(tok) || !count(tok, nf)) return std::string();
   if(nv < 0 || nf < 0) return "the OFF header has a negative count";
