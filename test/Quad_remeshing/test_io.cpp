@@ -129,6 +129,24 @@ BOOST_AUTO_TEST_CASE(doubled_faces_are_merged)
   BOOST_TEST(CGAL::is_closed(m));
 }
 
+BOOST_AUTO_TEST_CASE(coloured_off_reads_without_its_colours)
+{
+  // COFF whose second vertex has no colour: CGAL 5.5's scanner read that colour past the end of the line's
+  // numbers (a heap overflow, found by fuzzing). Colours are not used: the mesh is the tetrahedron.
+  const std::string path = write_text("io_coff.off",
+    "# a tetrahedron\nCOFF\n4 4 0\n0 0 0 255 0 0 255\n1 0 0\n0 1 0 0 0 255 255\n0 0 1 9 9 9 255\n"
+    "3 0 2 1 10 10 10\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  Mesh m;
+  const QR::Repair_statistics s = QR::read_and_repair(path, m);
+  BOOST_TEST(s.input_vertices == 4u);
+  BOOST_TEST(s.input_faces == 4u);
+  BOOST_TEST(num_faces(m) == 4u);
+  BOOST_TEST(CGAL::is_closed(m));
+  bool has_second_vertex = false;
+  for(auto v : vertices(m)) has_second_vertex = has_second_vertex || m.point(v) == qr_test::Point_3(1, 0, 0);
+  BOOST_TEST(has_second_vertex);
+}
+
 BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
 {
   BOOST_TEST(throws_bad_input(qr_test::output_file("does_not_exist.off"), "cannot open"));

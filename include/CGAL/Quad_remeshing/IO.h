@@ -29,6 +29,7 @@
 #include <cstddef>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -273,6 +274,30 @@ inline std::string check_off_header(const std::string& fname)
   return std::string();
 }
 
+// CGAL 5.5's OFF scanner reads a vertex's colour past the numbers of its line when the keyword has the
+// colour prefix C and a vertex line has no colour (a heap overflow, found by fuzzing). Colours are not
+// used here: returns true and the file's content without that C when the keyword has one.
+inline bool off_content_without_colours(const std::string& fname, std::string& content)
+{
+  std::ifstream in(fname, std::ios::binary);
+  content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::size_t p = 0;
+  while(p < content.size())
+  {
+    if(content[p] == '#') { p = content.find('\n', p); if(p == std::string::npos) return false; }
+    else if(!std::isspace(static_cast<unsigned char>(content[p]))) break;
+    ++p;
+  }
+  std::size_t q = p;
+  while(q < content.size() && std::isalnum(static_cast<unsigned char>(content[q]))) ++q;
+  const std::size_t off = content.substr(p, q - p).find("OFF");
+  if(off == std::string::npos) return false;
+  const std::size_t c = content.substr(p, off).find('C');
+  if(c == std::string::npos) return false;
+  content.erase(p + c, 1);
+  return true;
+}
+
 // Removes the points no polygon uses and renumbers the polygons; returns the number removed.
 template <typename Point, typename Polygon>
 std::size_t remove_unused_points(std::vector<Point>& points, std::vector<Polygon>& polygons)
@@ -363,7 +388,14 @@ Repair_statistics read_and_repair(const std::string& fname,
   std::vector<Polygon> polygons;
   bool ok = false;
   try {
-    ok = CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false));
+    std::string content;
+    if(ext == "off" && internal::off_content_without_colours(fname, content))
+    {
+      std::istringstream is(content);
+      ok = CGAL::IO::read_OFF(is, points, polygons, CGAL::parameters::verbose(false));
+    }
+    else
+      ok = CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false));
   } catch(const std::exception& e) {
     throw Bad_input("'" + fname + "': cannot parse the file (" + e.what() + ")");
   }
