@@ -198,9 +198,11 @@ inline std::string check_ply_header(const std::string& fname)
 // comments, a keyword ending in OFF (prefixes ST, C, N, 4, n), then either the counts or BINARY and
 // big-endian 32-bit counts (a dimension first for the n prefix). Returns an empty string if the
 // counts are possible (or the header is not one CGAL would accept, which its reader then reports),
-// else what is wrong.
-inline std::string check_off_header(const std::string& fname)
+// else what is wrong. When the keyword has the colour prefix C (see off_content_without_colours()),
+// `*colour_prefix_at` is set to that C's offset in the file, else to -1.
+inline std::string check_off_header(const std::string& fname, long long* colour_prefix_at = nullptr)
 {
+  if(colour_prefix_at) *colour_prefix_at = -1;
   std::ifstream in(fname, std::ios::binary);
   in.seekg(0, std::ios::end);
   const long long file_size = static_cast<long long>(in.tellg());
@@ -228,15 +230,29 @@ inline std::string check_off_header(const std::string& fname)
     return true;
   };
   std::string keyword, tok;
+  char c = 0;
   // CGAL's reader accepts more than the documented keywords (e.g. "\0OFF\xc7", found by fuzzing): any first
   // token holding "OFF" is checked
+  while(in.get(c)) {
+    if(c == '#') { std::string rest; std::getline(in, rest); continue; }
+    if(!std::isspace(static_cast<unsigned char>(c))) { in.unget(); break; }
+  }
+  const long long keyword_at = in ? static_cast<long long>(in.tellg()) : -1;
   if(!next_token(keyword) || keyword.find("OFF") == std::string::npos) return std::string();
+  {
+    // CGAL takes the keyword's letters and digits: a C before its OFF is the colour prefix
+    std::size_t q = 0;
+    while(q < keyword.size() && std::isalnum(static_cast<unsigned char>(keyword[q]))) ++q;
+    const std::size_t off = keyword.substr(0, q).find("OFF");
+    const std::size_t colour = off == std::string::npos ? off : keyword.substr(0, off).find('C');
+    if(colour_prefix_at && colour != std::string::npos && keyword_at >= 0)
+      *colour_prefix_at = keyword_at + static_cast<long long>(colour);
+  }
   const bool dimensional = keyword.find('n') != std::string::npos;
   long long nv = 0, nf = 0;
   // CGAL reads the word after the keyword as letters and digits only: "BINARY\x03..." is BINARY too; when
   // the character that ends the word is not a newline, the rest of that line is skipped
   std::string word;
-  char c = 0;
   while(in.get(c)) {
     if(c == '#') { std::string rest; std::getline(in, rest); continue; }
     if(!std::isspace(static_cast<unsigned char>(c))) break;
@@ -276,26 +292,14 @@ inline std::string check_off_header(const std::string& fname)
 
 // CGAL 5.5's OFF scanner reads a vertex's colour past the numbers of its line when the keyword has the
 // colour prefix C and a vertex line has no colour (a heap overflow, found by fuzzing). Colours are not
-// used here: returns true and the file's content without that C when the keyword has one.
-inline bool off_content_without_colours(const std::string& fname, std::string& content)
+// used here: the file's content without the C at `colour_prefix_at` (found by check_off_header()).
+inline std::string off_content_without_colours(const std::string& fname, long long colour_prefix_at)
 {
   std::ifstream in(fname, std::ios::binary);
-  content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  std::size_t p = 0;
-  while(p < content.size())
-  {
-    if(content[p] == '#') { p = content.find('\n', p); if(p == std::string::npos) return false; }
-    else if(!std::isspace(static_cast<unsigned char>(content[p]))) break;
-    ++p;
-  }
-  std::size_t q = p;
-  while(q < content.size() && std::isalnum(static_cast<unsigned char>(content[q]))) ++q;
-  const std::size_t off = content.substr(p, q - p).find("OFF");
-  if(off == std::string::npos) return false;
-  const std::size_t c = content.substr(p, off).find('C');
-  if(c == std::string::npos) return false;
-  content.erase(p + c, 1);
-  return true;
+  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if(colour_prefix_at >= 0 && static_cast<std::size_t>(colour_prefix_at) < content.size())
+    content.erase(static_cast<std::size_t>(colour_prefix_at), 1);
+  return content;
 }
 
 // Removes the points no polygon uses and renumbers the polygons; returns the number removed.
@@ -378,9 +382,11 @@ Repair_statistics read_and_repair(const std::string& fname,
     if(probe.peek() == std::ifstream::traits_type::eof()) throw Bad_input("'" + fname + "': the file is empty");
   }
 
+  long long colour_prefix_at = -1; // an OFF keyword's colour prefix, read without it
   if(ext == "ply" || ext == "off")
   {
-    const std::string problem = ext == "ply" ? internal::check_ply_header(fname) : internal::check_off_header(fname);
+    const std::string problem = ext == "ply" ? internal::check_ply_header(fname)
+                                             : internal::check_off_header(fname, &colour_prefix_at);
     if(!problem.empty()) throw Bad_input("'" + fname + "': " + problem);
   }
 
@@ -388,10 +394,9 @@ Repair_statistics read_and_repair(const std::string& fname,
   std::vector<Polygon> polygons;
   bool ok = false;
   try {
-    std::string content;
-    if(ext == "off" && internal::off_content_without_colours(fname, content))
+    if(ext == "off" && colour_prefix_at >= 0)
     {
-      std::istringstream is(content);
+      std::istringstream is(internal::off_content_without_colours(fname, colour_prefix_at));
       ok = CGAL::IO::read_OFF(is, points, polygons, CGAL::parameters::verbose(false));
     }
     else
