@@ -28,9 +28,11 @@ namespace internal {
   left turn or U-turn, fewer than 3 or more than 6 corners) is quadrangulated all the same with
   corners chosen among its convex turns: non-convex turns become points of a side (the map onto the
   convex polygon stays one-to-one, the quads there are less regular), with more than 6 corners the
-  ones joining the shortest sides are dropped, and with fewer than 4 corners points near the middle of
+  ones joining the shortest sides are dropped, and with fewer than 3 corners points near the middle of
   the longest sides are added, splitting arcs where needed (the patch on the other side of such an arc
-  sees the same split). Patches that are not disks are refused.
+  sees the same split). Patches that are not disks are refused. A patch with 3 corners keeps them (the
+  quadrangulation serves triangles): a corner added on a side would be a quad corner where the side is
+  straight, a 180-degree angle on a border or a flat corner at a valence-3 vertex inside.
 */
 template <typename TriangleMesh, typename Layout>
 struct Quadrangulation_layout
@@ -102,7 +104,7 @@ struct Quadrangulation_layout
         corners.erase(corners.begin() + std::ptrdiff_t(best));
         ++dropped_corners;
       }
-      while(corners.size() < 4 && corners.size() < m)
+      while(corners.size() < 3 && corners.size() < m)
       {
         // the middle of the longest side (the whole loop when there is no corner)
         std::size_t from = 0;
