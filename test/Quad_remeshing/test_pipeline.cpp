@@ -97,6 +97,23 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
   BOOST_TEST(first == run(2));
 }
 
+// A layout patch with three corners is quadrangulated as a triangle. When a fourth corner was added in
+// the middle of its longest side, the quad there had a corner at 180 degrees: on draco_test_nm at a
+// border vertex of valence 2 (smallest scaled Jacobian 3.6e-10). fandisk's smallest was 0.016.
+BOOST_AUTO_TEST_CASE(three_sided_patches_give_no_flat_corner)
+{
+  for(const char* name : {"draco_test_nm.off", "fandisk.off"})
+  {
+    Mesh t, q;
+    QR::read_and_repair(qr_test::data_file(name), t);
+    QR::quad_remesh(t, q);
+    const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+    BOOST_TEST_MESSAGE(name << ": SJ min " << quality.min_scaled_jacobian);
+    BOOST_TEST(quality.valid);
+    BOOST_TEST(quality.min_scaled_jacobian > 0.1);
+  }
+}
+
 // spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled
 // Jacobian -0.001) that no single vertex move could open; the relaxation of its region does.
 BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
