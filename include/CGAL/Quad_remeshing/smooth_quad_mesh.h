@@ -402,13 +402,12 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   };
   sj_figures(stats.min_scaled_jacobian_before, stats.mean_scaled_jacobian_before, stats.inverted_before);
 
-  // Untangling: the vertices of quads with a scaled Jacobian <= 0, and their neighbours, try a few
-  // positions (the fitted-square target, the neighbours' centroid, the parallelogram completions of
-  // their quads, halfway to each, axis steps), then, while one of its quads is still bad, a pattern
-  // search in the tangent plane from the best one (eight directions, the step halved when none helps), each position put back on the surface or on the
-  // vertex's feature line. A position counts by the number of such quads around the vertex (fewer is
-  // better), then by their smallest scaled Jacobian; only strict improvements are taken, so the number
-  // of such quads never grows.
+  // Untangling: the vertices of poor quads, and their neighbours, try a few positions (the
+  // fitted-square target, the neighbours' centroid, the parallelogram completions of their quads,
+  // halfway to each, axis steps), then, while one of its quads is still poor, a pattern search in the
+  // tangent plane from the best one (eight directions, the step halved when none helps), each position
+  // put back on the surface or on the vertex's feature line. Only strict improvements of the score of
+  // the vertex's quads are taken, so the number of quads with a scaled Jacobian <= 0 never grows.
   // A position is scored by its quads: first the number with a scaled Jacobian <= 0, then the number
   // below `poor_sj` (a quad at 1e-12 is as good as collapsed: a corner at 180 degrees, or two corners
   // on one point), then the smallest scaled Jacobian; negated counts, so that a larger tuple is better.
@@ -489,7 +488,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     };
     for(const Point_3& t : tries) try_position(t);
 
-    // when v still has a bad quad: pattern search in the plane of its quads (any plane when they are degenerate)
+    // when v still has a poor quad: pattern search in the plane of its quads (any plane when they are degenerate)
     const double nl = std::sqrt(CGAL::to_double(normal.squared_length()));
     Vector_3 n = nl > 0. ? normal / nl : Vector_3(0., 0., 1.);
     Vector_3 t1 = std::abs(CGAL::to_double(n.x())) < 0.9 ? CGAL::cross_product(n, Vector_3(1., 0., 0.))
@@ -558,8 +557,10 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return score;
   };
   // relaxes the vertices within `rings` rings of `seeds` (the outer ring held); returns the score of the
-  // quads around the moved vertices before and after, and puts the old positions back unless `keep`
-  auto relax_region = [&](const std::vector<q_vertex>& seeds, int rings, bool keep) {
+  // quads around the moved vertices before and after, gives the moved vertices' new positions in
+  // `relaxed` and puts the old positions back
+  typedef std::vector<std::pair<q_vertex, Point_3>> Positions;
+  auto relax_region = [&](const std::vector<q_vertex>& seeds, int rings, Positions& relaxed) {
     std::vector<q_vertex> region, ring(seeds), movable;
     for(int r = 0; r <= rings && !ring.empty(); ++r)
     {
@@ -605,8 +606,12 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     for(int pass = 0; pass < 3; ++pass)
       for(q_vertex v : movable) untangle_vertex(v);
     const Score after = region_score(quads);
-    if(!keep || !(after > before))
-      for(std::size_t i = 0; i < movable.size(); ++i) put(qvpm, movable[i], old_positions[i]);
+    relaxed.clear();
+    for(std::size_t i = 0; i < movable.size(); ++i)
+    {
+      relaxed.emplace_back(movable[i], get(qvpm, movable[i]));
+      put(qvpm, movable[i], old_positions[i]);
+    }
     return std::make_pair(before, after);
   };
   // each group of poor quads that share vertices is relaxed with the width (1 to 4 rings) that scores best
@@ -637,22 +642,21 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
             }
           }
         }
-      int best_rings = 0; // none yet
+      bool found = false;
       Score best;
+      Positions best_positions, positions;
       for(int rings = 1; rings <= 4; ++rings)
       {
-        const auto scores = relax_region(seeds, rings, false);
-        if(scores.second > scores.first && (best_rings == 0 || scores.second > best))
+        const auto scores = relax_region(seeds, rings, positions);
+        if(scores.second > scores.first && (!found || scores.second > best))
         {
           best = scores.second;
-          best_rings = rings;
+          best_positions.swap(positions);
+          found = true;
         }
       }
-      if(best_rings > 0)
-      {
-        relax_region(seeds, best_rings, true);
-        changed = true;
-      }
+      for(const auto& vp : best_positions) put(qvpm, vp.first, vp.second);
+      changed = changed || found;
     }
     return changed;
   };
