@@ -32,7 +32,10 @@ namespace internal {
   the longest sides are added, splitting arcs where needed (the patch on the other side of such an arc
   sees the same split). Patches that are not disks are refused. A patch with 3 corners keeps them (the
   quadrangulation serves triangles): a corner added on a side would be a quad corner where the side is
-  straight, a 180-degree angle on a border or a flat corner at a valence-3 vertex inside.
+  straight, a 180-degree angle on a border or a flat corner at a valence-3 vertex inside. Only a sliver
+  triangle, whose shortest side is under a quarter of its longest, gets a fourth corner (on the 22
+  development meshes, keeping such slivers as triangles stretched angle_block's quads over a
+  crease: feature coverage 0.980 instead of 0.995, Hausdorff distance 2.2% instead of 1.0%).
 */
 template <typename TriangleMesh, typename Layout>
 struct Quadrangulation_layout
@@ -104,7 +107,15 @@ struct Quadrangulation_layout
         corners.erase(corners.begin() + std::ptrdiff_t(best));
         ++dropped_corners;
       }
-      while(corners.size() < 3 && corners.size() < m)
+      // a sliver triangle (shortest side under a quarter of the longest) gets a fourth corner: its
+      // valence-3 centre would sit near the short side and stretch the quads over the long ones
+      std::size_t min_corners = 3;
+      if(corners.size() == 3)
+      {
+        const double a = side_length(0), b = side_length(1), c = side_length(2);
+        if((std::min)({a, b, c}) < 0.25 * (std::max)({a, b, c})) min_corners = 4;
+      }
+      while(corners.size() < min_corners && corners.size() < m)
       {
         // the middle of the longest side (the whole loop when there is no corner)
         std::size_t from = 0;
