@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace QR = CGAL::Quad_remeshing;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -219,12 +220,60 @@ BOOST_AUTO_TEST_CASE(adaptive_parameters)
   for(auto v : u.vertices()) BOOST_CHECK_CLOSE(size[v], su.target_edge_length, 1e-9);
   BOOST_CHECK_EQUAL(su.adaptive_rounds, 0u);
   BOOST_CHECK_LE(su.faces_after, su.faces_uniform + su.split_vertices * 4);
+  // well-shaped triangles: a single uniform pass
+  BOOST_CHECK_LT(su.split_blowup, 25.);
+  BOOST_CHECK_EQUAL(su.coarse_edge_length, 0.);
   const auto sd = QR::remesh_for_quadrangulation(m, f, QR::parameters::adaptive_remeshing(true));
   const auto sl = QR::remesh_for_quadrangulation(
     loose, fl, QR::parameters::combine(QR::parameters::adaptive_remeshing(true), QR::parameters::remeshing_tolerance(0.05)));
   BOOST_CHECK_LE(sl.distance_after, 0.05);
   BOOST_CHECK_LE(sd.distance_after, 0.002);
   BOOST_CHECK_LE(sl.adaptive_rounds, sd.adaptive_rounds);
+}
+
+// Long thin CAD triangles (split estimate about 40): the uniform pass is preceded by a pass at 4 times its
+// length; the corners stay, the features and the surface are kept as by the uniform pass.
+BOOST_AUTO_TEST_CASE(coarse_pass_for_thin_triangles)
+{
+  Mesh m = load("abc_00000008.off");
+  const Mesh input = m;
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  auto c = m.add_property_map<Mesh::Vertex_index, bool>("v:c", false).first;
+  QR::detect_feature_edges(m, f, QR::parameters::vertex_is_feature_corner_map(c));
+  Segments input_features;
+  for(auto e : m.edges())
+    if(f[e]) input_features.emplace_back(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e))));
+  std::vector<Point_3> corner_points;
+  for(auto v : m.vertices())
+    if(c[v]) corner_points.push_back(m.point(v));
+  const auto st = QR::remesh_for_quadrangulation(m, f, QR::parameters::vertex_is_feature_corner_map(c));
+  BOOST_REQUIRE(m.is_valid(false));
+  BOOST_CHECK_GT(st.split_blowup, 25.);
+  BOOST_CHECK_CLOSE(st.coarse_edge_length, 4. * st.target_edge_length, 1e-9);
+  BOOST_CHECK_GT(st.faces_coarse, 0u);
+  BOOST_CHECK_LT(st.faces_coarse, st.faces_uniform / 4);
+  // about as many faces as equilateral triangles of the target length cover the area
+  const double expected = PMP::area(input) / (std::sqrt(3.) / 4. * CGAL::square(st.target_edge_length));
+  BOOST_CHECK_GT(double(st.faces_uniform), 0.7 * expected);
+  BOOST_CHECK_LT(double(st.faces_uniform), 1.5 * expected);
+  std::set<Point_3> output_corners;
+  for(auto v : m.vertices())
+    if(c[v]) output_corners.insert(m.point(v));
+  BOOST_CHECK_EQUAL(output_corners.size(), corner_points.size());
+  for(const Point_3& p : corner_points) BOOST_CHECK(output_corners.count(p));
+  const CGAL::Bbox_3 bb = PMP::bbox(input);
+  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) +
+                                CGAL::square(bb.zmax() - bb.zmin()));
+  Segments output_features;
+  for(auto e : m.edges())
+    if(f[e]) output_features.emplace_back(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e))));
+  const double cov = coverage(input_features, output_features, diag, 1e-3 * diag);
+  const double hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+    m, input, CGAL::parameters::number_of_points_on_faces(100000), CGAL::parameters::number_of_points_on_faces(100000)) / diag;
+  BOOST_TEST_MESSAGE("coarse pass: estimate " << st.split_blowup << ", " << st.faces_coarse << " then "
+                     << st.faces_uniform << " faces, coverage " << cov << ", Hausdorff / diagonal " << hausdorff);
+  BOOST_CHECK_GE(cov, 0.99);
+  BOOST_CHECK_LE(hausdorff, 2e-3);
 }
 
 BOOST_AUTO_TEST_CASE(density_helpers)

@@ -28,9 +28,11 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,6 +66,9 @@ struct Remeshing_statistics
   std::size_t sharp_edges_held = 0;      ///< input sharp edges that are not features, held in place by the adaptive setting
   double distance_after = 0.;            ///< measured distance to the input after the adaptive pass (fraction of the diagonal)
   double min_size = 0., max_size = 0.;   ///< range of the sizing field of the adaptive pass
+  double split_blowup = 0.;              ///< estimate (an overstatement) of how many times the result's faces the first split pass at the target would make (see `remesh_for_quadrangulation()`); 0 with the adaptive pass
+  double coarse_edge_length = 0.;        ///< edge length of the coarse pass before the uniform pass, 0 if there was none
+  std::size_t faces_coarse = 0;          ///< faces after the coarse pass
 
   /// the figures as a report record
   Report report() const
@@ -88,6 +93,9 @@ struct Remeshing_statistics
     r["distance_after"] = distance_after;
     r["min_size"] = min_size;
     r["max_size"] = max_size;
+    r["split_blowup"] = split_blowup;
+    r["coarse_edge_length"] = coarse_edge_length;
+    r["F_coarse"] = faces_coarse;
     r["seconds_uniform"] = seconds_uniform;
     r["seconds_adaptive"] = seconds_adaptive;
     r["seconds_split"] = seconds_split;
@@ -188,6 +196,33 @@ double quad_edge_length_from_scale(const TriangleMesh& tmesh, double scale,
 
 namespace internal {
 
+// The uniform pass's first split pass cuts every edge longer than 4/3 of the target, so a triangle with a long
+// edge `l` ends as up to about (l / target)^2 triangles, while the result has about area / (sqrt(3)/4 target^2). The
+// ratio of the two sums does not depend on the target and overstates the growth: about 1 for a well-shaped
+// input, 51 for abc_00000009 (long thin CAD triangles: 0.65-1.3M faces after the first split pass for 105k in the end), 37-44
+// for abc_00000006/8, at most 16 for the other development meshes.
+template <typename TriangleMesh, typename VPM>
+double split_blowup_estimate(const TriangleMesh& tmesh, VPM vpm)
+{
+  double longest = 0., area = 0.;
+  for(auto f : faces(tmesh))
+  {
+    const auto h = halfedge(f, tmesh);
+    const auto& p = get(vpm, source(h, tmesh));
+    const auto& q = get(vpm, target(h, tmesh));
+    const auto& r = get(vpm, target(next(h, tmesh), tmesh));
+    longest += CGAL::to_double((std::max)({CGAL::squared_distance(p, q), CGAL::squared_distance(q, r),
+                                           CGAL::squared_distance(r, p)}));
+    area += std::sqrt(CGAL::to_double(CGAL::squared_area(p, q, r)));
+  }
+  return area > 0. ? longest * std::sqrt(3.) / 4. / area : 0.;
+}
+// above this estimate the uniform pass is preceded by a coarse pass (between the 16 and 37 of the development meshes)
+constexpr double coarse_pass_blowup = 25.;
+// the coarse pass's edge length in target lengths: its own split pass then makes about 16 times fewer faces
+// (on abc_00000009, factors 3 to 6 gave the same time within noise)
+constexpr double coarse_pass_factor = 4.;
+
 // Pass 2: the sizing field starts from the paper's radius-ratio rule (capped at the uniform length) and
 // is refined where the measured distance to the input exceeds 70% of the tolerance (the remaining 30%
 // is a margin for the points between the measured samples), by sqrt(target / distance) (the chord error
@@ -281,6 +316,13 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
 
   Pass 1 is a uniform isotropic remeshing at half the quad edge length `L`, by
   `CGAL::Polygon_mesh_processing::isotropic_remeshing()` with the feature edges as constraints.
+  If the input has long thin triangles (the estimate `split_blowup` of the statistics, the sum over the
+  faces of `(longest edge / L)^2` over the area in equilateral triangles of edge `L`, is above 25), the
+  first split pass at `L` would cut them into many times the faces of the result (1M faces for 105k on
+  a CAD mesh); pass 1 then first remeshes at `4 L` (same settings and iterations, and every vertex on a
+  feature line is held so that the lines keep their input points), then at `L` projecting onto the input,
+  each vertex onto its own patch between the features as `isotropic_remeshing()` does. The result differs
+  from that of a single pass; other inputs are remeshed exactly as before.
 
   Pass 2 (`adaptive_remeshing`, off by default, see below) is the package's own loop of edge splits, edge collapses,
   edge flips, tangential relaxation and projection onto the input, driven by a target edge length per
@@ -500,13 +542,18 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   for(vertex_descriptor v : vertices(tmesh)) put(vcm, v, false);
   for(vertex_descriptor v : corners) put(vcm, v, true);
 
-  auto remesh_np = CGAL::parameters::number_of_iterations(iterations)
-                     .edge_is_constrained_map(edge_is_feature_map)
-                     .vertex_is_constrained_map(vcm)
-                     .protect_constraints(false)
-                     .collapse_constraints(true)
-                     .relax_constraints(false)
-                     .vertex_point_map(vpm);
+  // the settings of every isotropic_remeshing() call: the constrained edges are split and collapsed along
+  // their lines but not relaxed, the constrained vertices never move
+  auto remeshing_np = [&](auto constrained_edges, auto constrained_vertices) {
+    return CGAL::parameters::number_of_iterations(iterations)
+             .edge_is_constrained_map(constrained_edges)
+             .vertex_is_constrained_map(constrained_vertices)
+             .protect_constraints(false)
+             .collapse_constraints(true)
+             .relax_constraints(false)
+             .vertex_point_map(vpm);
+  };
+  auto remesh_np = remeshing_np(edge_is_feature_map, vcm);
 
   CGAL::Real_timer timer;
   timer.start();
@@ -521,7 +568,58 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   std::vector<typename GT::Segment_3> held_segments;
   if(!adaptive)
   {
-    PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remesh_np);
+    st.split_blowup = internal::split_blowup_estimate(tmesh, vpm);
+    if(st.split_blowup <= internal::coarse_pass_blowup)
+      PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remesh_np);
+    else
+    {
+      // Long thin input triangles: the first split pass at the target would cut them into many times the
+      // faces of the result (about 10x, 1M faces, on a CAD mesh) before the collapses. A pass at a
+      // coarser length first makes well-shaped triangles, so that the pass at the target splits little.
+      // In the coarse pass every vertex on a feature line is held, so the lines keep all their input
+      // points; the pass at the target then has the usual settings, projects onto the input (not onto
+      // the coarse mesh), each vertex onto its own patch as isotropic_remeshing() does by default.
+      st.coarse_edge_length = internal::coarse_pass_factor * st.target_edge_length;
+      auto patch = get(CGAL::dynamic_face_property_t<std::size_t>(), tmesh);
+      const std::size_t patches =
+        PMP::connected_components(tmesh, patch, CGAL::parameters::edge_is_constrained_map(edge_is_feature_map));
+      typedef typename internal::Remeshing_reference<GT>::Triangle Triangle;
+      typedef typename internal::Remeshing_reference<GT>::Tri_tree Tri_tree;
+      std::vector<std::vector<Triangle>> patch_triangles(patches);
+      for(face_descriptor f : faces(tmesh))
+      {
+        const auto h = halfedge(f, tmesh);
+        patch_triangles[get(patch, f)].emplace_back(get(vpm, source(h, tmesh)), get(vpm, target(h, tmesh)),
+                                                    get(vpm, target(next(h, tmesh), tmesh)));
+      }
+      auto held = get(CGAL::dynamic_vertex_property_t<bool>(), tmesh);
+      for(vertex_descriptor v : vertices(tmesh))
+      {
+        bool on_line = get(vcm, v);
+        for(auto h : halfedges_around_target(v, tmesh))
+          on_line = on_line || get(edge_is_feature_map, edge(h, tmesh));
+        put(held, v, on_line);
+      }
+      PMP::isotropic_remeshing(faces(tmesh), st.coarse_edge_length, tmesh,
+                               remeshing_np(edge_is_feature_map, held).face_patch_map(patch));
+      st.faces_coarse = std::size_t(std::distance(faces(tmesh).begin(), faces(tmesh).end()));
+      if(verbose)
+        std::cerr << "[remeshing] split estimate " << st.split_blowup << ", coarse pass at " << st.coarse_edge_length
+                  << ": " << st.faces_coarse << " faces (" << timer.time() << " s)" << std::endl;
+      std::vector<std::unique_ptr<Tri_tree>> trees;
+      for(const std::vector<Triangle>& t : patch_triangles)
+      {
+        trees.push_back(std::make_unique<Tri_tree>(t.begin(), t.end()));
+        trees.back()->accelerate_distance_queries();
+      }
+      auto project = [&](vertex_descriptor v) {
+        const face_descriptor f = face(halfedge(v, tmesh), tmesh);
+        if(f == GTr::null_face()) return get(vpm, v);
+        return trees[get(patch, f)]->closest_point(get(vpm, v));
+      };
+      PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh,
+                               remesh_np.face_patch_map(patch).projection_functor(project));
+    }
     reference.build_surface();
   }
   else
@@ -568,14 +666,7 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
       reference.features.rebuild(reference.feature_segments.begin(), reference.feature_segments.end());
       reference.features.accelerate_distance_queries();
     }
-    PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh,
-                             CGAL::parameters::number_of_iterations(iterations)
-                               .edge_is_constrained_map(constrained)
-                               .vertex_is_constrained_map(fixed)
-                               .protect_constraints(false)
-                               .collapse_constraints(true)
-                               .relax_constraints(false)
-                               .vertex_point_map(vpm));
+    PMP::isotropic_remeshing(faces(tmesh), st.target_edge_length, tmesh, remeshing_np(constrained, fixed));
   }
   st.seconds_uniform = timer.time();
   if(verbose)
