@@ -231,11 +231,11 @@ BOOST_AUTO_TEST_CASE(adaptive_parameters)
   BOOST_CHECK_LE(sl.adaptive_rounds, sd.adaptive_rounds);
 }
 
-// Long thin CAD triangles (split estimate about 40): the uniform pass is preceded by a pass at 4 times its
+// Long thin CAD triangles (split estimate 51): the uniform pass is preceded by a pass at 4 times its
 // length; the corners stay, the features and the surface are kept as by the uniform pass.
 BOOST_AUTO_TEST_CASE(coarse_pass_for_thin_triangles)
 {
-  Mesh m = load("abc_00000008.off");
+  Mesh m = load("abc_00000009.off");
   const Mesh input = m;
   auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
   auto c = m.add_property_map<Mesh::Vertex_index, bool>("v:c", false).first;
@@ -248,7 +248,7 @@ BOOST_AUTO_TEST_CASE(coarse_pass_for_thin_triangles)
     if(c[v]) corner_points.push_back(m.point(v));
   const auto st = QR::remesh_for_quadrangulation(m, f, QR::parameters::vertex_is_feature_corner_map(c));
   BOOST_REQUIRE(m.is_valid(false));
-  BOOST_CHECK_GT(st.split_blowup, 25.);
+  BOOST_CHECK_GT(st.split_blowup, 45.);
   BOOST_CHECK_CLOSE(st.coarse_edge_length, 4. * st.target_edge_length, 1e-9);
   BOOST_CHECK_GT(st.faces_coarse, 0u);
   BOOST_CHECK_LT(st.faces_coarse, st.faces_uniform / 4);

@@ -217,8 +217,11 @@ double split_blowup_estimate(const TriangleMesh& tmesh, VPM vpm)
   }
   return area > 0. ? longest * std::sqrt(3.) / 4. / area : 0.;
 }
-// above this estimate the uniform pass is preceded by a coarse pass (between the 16 and 37 of the development meshes)
-constexpr double coarse_pass_blowup = 25.;
+// above this estimate the uniform pass is preceded by a coarse pass. The pass changes the triangles the later
+// stages see, and they react strongly to any change: at 25, abc_00000006 (43.5) got a 1.6% Hausdorff distance
+// instead of 0.4% for a remeshing 3.4 s shorter, so only the extreme case (abc_00000009, 51: 1M faces after
+// the first split, 236 MiB) takes it
+constexpr double coarse_pass_blowup = 45.;
 // the coarse pass's edge length in target lengths: its own split pass then makes about 16 times fewer faces
 // (on abc_00000009, factors 3 to 6 gave the same time within noise)
 constexpr double coarse_pass_factor = 4.;
@@ -317,7 +320,7 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
   Pass 1 is a uniform isotropic remeshing at half the quad edge length `L`, by
   `CGAL::Polygon_mesh_processing::isotropic_remeshing()` with the feature edges as constraints.
   If the input has long thin triangles (the estimate `split_blowup` of the statistics, the sum over the
-  faces of `(longest edge / L)^2` over the area in equilateral triangles of edge `L`, is above 25), the
+  faces of `(longest edge / L)^2` over the area in equilateral triangles of edge `L`, is above 45), the
   first split pass at `L` would cut them into many times the faces of the result (1M faces for 105k on
   a CAD mesh); pass 1 then first remeshes at `4 L` (same settings and iterations, and every vertex on a
   feature line is held so that the lines keep their input points), then at `L` projecting onto the input,
