@@ -207,12 +207,18 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
   in.seekg(0, std::ios::end);
   const long long file_size = static_cast<long long>(in.tellg());
   in.seekg(0, std::ios::beg);
-  auto next_token = [&](std::string& tok) {
+  // the next token after spaces and '#' comments; `start`, if given, gets its offset in the file
+  auto next_token = [&](std::string& tok, long long* start = nullptr) {
     tok.clear();
     char c;
     while(in.get(c)) {
       if(c == '#') { std::string rest; std::getline(in, rest); continue; }
-      if(!std::isspace(static_cast<unsigned char>(c))) { tok.push_back(c); break; }
+      if(!std::isspace(static_cast<unsigned char>(c)))
+      {
+        if(start) *start = static_cast<long long>(in.tellg()) - 1;
+        tok.push_back(c);
+        break;
+      }
     }
     while(in.get(c) && !std::isspace(static_cast<unsigned char>(c)) && tok.size() < 64) tok.push_back(c);
     return !tok.empty();
@@ -230,15 +236,10 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
     return true;
   };
   std::string keyword, tok;
-  char c = 0;
   // CGAL's reader accepts more than the documented keywords (e.g. "\0OFF\xc7", found by fuzzing): any first
   // token holding "OFF" is checked
-  while(in.get(c)) {
-    if(c == '#') { std::string rest; std::getline(in, rest); continue; }
-    if(!std::isspace(static_cast<unsigned char>(c))) { in.unget(); break; }
-  }
-  const long long keyword_at = in ? static_cast<long long>(in.tellg()) : -1;
-  if(!next_token(keyword) || keyword.find("OFF") == std::string::npos) return std::string();
+  long long keyword_at = -1;
+  if(!next_token(keyword, &keyword_at) || keyword.find("OFF") == std::string::npos) return std::string();
   {
     // CGAL takes the keyword's letters and digits: a C before its OFF is the colour prefix
     std::size_t q = 0;
@@ -253,6 +254,7 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
   // CGAL reads the word after the keyword as letters and digits only: "BINARY\x03..." is BINARY too; when
   // the character that ends the word is not a newline, the rest of that line is skipped
   std::string word;
+  char c = 0;
   while(in.get(c)) {
     if(c == '#') { std::string rest; std::getline(in, rest); continue; }
     if(!std::isspace(static_cast<unsigned char>(c))) break;

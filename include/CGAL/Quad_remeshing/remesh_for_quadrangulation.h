@@ -196,11 +196,12 @@ double quad_edge_length_from_scale(const TriangleMesh& tmesh, double scale,
 
 namespace internal {
 
-// The uniform pass's first split pass cuts every edge longer than 4/3 of the target, so a triangle with a long
-// edge `l` ends as up to about (l / target)^2 triangles, while the result has about area / (sqrt(3)/4 target^2). The
-// ratio of the two sums does not depend on the target and overstates the growth: about 1 for a well-shaped
-// input, 51 for abc_00000009 (long thin CAD triangles: 0.65-1.3M faces after the first split pass for 105k in the end), 37-44
-// for abc_00000006/8, at most 16 for the other development meshes.
+// The uniform pass's first split pass cuts every edge longer than 4/3 of the target, so a triangle with a
+// long edge `l` ends as up to about (l / target)^2 triangles, while the result has about
+// area / (sqrt(3)/4 target^2). The ratio of the two sums does not depend on the target and overstates the
+// growth: about 1 for a well-shaped input, 51 for abc_00000009 (long thin CAD triangles: 0.65-1.3M faces
+// after the first split pass for 105k in the end), 37-44 for abc_00000006/8, at most 16 for the other
+// development meshes.
 template <typename TriangleMesh, typename VPM>
 double split_blowup_estimate(const TriangleMesh& tmesh, VPM vpm)
 {
@@ -597,12 +598,7 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
       }
       auto held = get(CGAL::dynamic_vertex_property_t<bool>(), tmesh);
       for(vertex_descriptor v : vertices(tmesh))
-      {
-        bool on_line = get(vcm, v);
-        for(auto h : halfedges_around_target(v, tmesh))
-          on_line = on_line || get(edge_is_feature_map, edge(h, tmesh));
-        put(held, v, on_line);
-      }
+        put(held, v, get(vcm, v) || internal::feature_degree(v, tmesh, edge_is_feature_map) > 0);
       PMP::isotropic_remeshing(faces(tmesh), st.coarse_edge_length, tmesh,
                                remeshing_np(edge_is_feature_map, held).face_patch_map(patch));
       st.faces_coarse = std::size_t(std::distance(faces(tmesh).begin(), faces(tmesh).end()));
