@@ -242,6 +242,52 @@ BOOST_AUTO_TEST_CASE(folded_grid_is_untangled_without_smoothing_iterations)
   for(auto v : vertices(q)) BOOST_TEST(std::abs(q.point(v).z()) < 1e-12);
 }
 
+BOOST_AUTO_TEST_CASE(a_held_dart_is_mended_by_splitting_its_chords)
+{
+  // A 4 x 4 grid on the flat unit square whose central quad is a dart (a corner at about 240 degrees)
+  // with all four corners held: no move of a vertex can mend it, splitting the two chords through it
+  // (their quads cut in two, in four where they cross) and moving the new vertices can.
+  const int n = 4;
+  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
+    if(i == 2 && j == 2) { x = 0.3; y = 0.3; }
+  });
+  Mesh& q = g.q;
+  auto held = get(CGAL::dynamic_vertex_property_t<bool>(), q);
+  for(auto v : vertices(q)) put(held, v, false);
+  for(int j : {1, 2})
+    for(int i : {1, 2}) put(held, g.grid[j * (n + 1) + i], true);
+  auto qf = get(CGAL::dynamic_edge_property_t<bool>(), q);
+  for(auto e : edges(q)) put(qf, e, is_border(e, q));
+  BOOST_TEST_REQUIRE(min_sj(q) <= 0.);
+  const std::size_t border_edges_before = std::size_t(std::count_if(edges(q).begin(), edges(q).end(),
+                                                                     [&](auto e) { return is_border(e, q); }));
+
+  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(
+    q, g.t, g.tf, CGAL::parameters::vertex_is_constrained_map(held).edge_is_constrained_map(qf));
+  BOOST_TEST(s.inverted_before >= 1u);
+  BOOST_TEST(s.inverted_after == 0u);
+  BOOST_TEST(s.refined_chords >= 1u);
+  BOOST_TEST(min_sj(q) > 0.);
+  // still a conforming, pure-quad disk on the square, held vertices where they were
+  BOOST_TEST(q.is_valid(false));
+  BOOST_TEST(num_faces(q) == 16u + s.refinement_quads);
+  for(auto f : faces(q)) BOOST_TEST(CGAL::halfedges_around_face(halfedge(f, q), q).size() == 4u);
+  for(auto v : vertices(q))
+  {
+    BOOST_TEST(std::abs(q.point(v).z()) < 1e-12);
+    BOOST_TEST((q.point(v).x() > -1e-12 && q.point(v).x() < 1 + 1e-12 && q.point(v).y() > -1e-12 && q.point(v).y() < 1 + 1e-12));
+  }
+  BOOST_TEST(q.point(g.grid[2 * (n + 1) + 2]) == Point_3(0.3, 0.3, 0));
+  // the split border edges' halves are constrained, and they are the whole border
+  std::size_t border_edges = 0;
+  for(auto e : edges(q))
+  {
+    BOOST_TEST(get(qf, e) == is_border(e, q));
+    if(is_border(e, q)) ++border_edges;
+  }
+  BOOST_TEST(border_edges > border_edges_before);
+}
+
 BOOST_AUTO_TEST_CASE(untangling_never_slides_a_vertex_onto_a_corner)
 {
   // A 3 x 3 grid whose inner vertex (1, 1) is held fixed just outside the square, at (-0.05, 0.1): the

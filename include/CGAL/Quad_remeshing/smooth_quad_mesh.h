@@ -16,7 +16,9 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
@@ -50,6 +52,8 @@ struct Quad_smoothing_statistics
   std::size_t inverted_before = 0;    ///< quads with a scaled Jacobian <= 0 before smoothing
   std::size_t inverted_after = 0;     ///< quads with a scaled Jacobian <= 0 after smoothing
   std::size_t untangling_moves = 0;   ///< vertex moves made to untangle quads with a scaled Jacobian <= 0
+  std::size_t refined_chords = 0;     ///< chords split in two because a quad on them stayed inverted
+  std::size_t refinement_quads = 0;   ///< quads added by those splits
   double min_scaled_jacobian_before = 0.;  ///< over all quads, before smoothing
   double min_scaled_jacobian_after = 0.;   ///< over all quads, after smoothing
   double mean_scaled_jacobian_before = 0.; ///< over all quads, before smoothing
@@ -69,6 +73,8 @@ struct Quad_smoothing_statistics
     r["inverted_before"] = inverted_before;
     r["inverted_after"] = inverted_after;
     r["untangling_moves"] = untangling_moves;
+    r["refined_chords"] = refined_chords;
+    r["refinement_quads"] = refinement_quads;
     r["min_scaled_jacobian_before"] = min_scaled_jacobian_before;
     r["min_scaled_jacobian_after"] = min_scaled_jacobian_after;
     r["mean_scaled_jacobian_before"] = mean_scaled_jacobian_before;
@@ -196,6 +202,16 @@ struct Feature_lines
   }
 };
 
+// A refinement that is undone leaves removed elements in a `Surface_mesh`: they go, so that the output
+// has consecutive indices; other meshes remove elements at once.
+template <typename P>
+void collect_garbage_of(CGAL::Surface_mesh<P>& m)
+{
+  if(m.has_garbage()) m.collect_garbage();
+}
+template <typename Mesh>
+void collect_garbage_of(Mesh&) {}
+
 } // namespace internal
 
 /*!
@@ -232,6 +248,15 @@ struct Feature_lines
   slides onto its neighbour or onto the corner at the end of its feature line. A smoothing move must
   not add a quad with a scaled Jacobian <= 0 or a poor quad.
 
+  A quad that is still inverted after all that (folded over a bend of the surface smaller than itself,
+  or with a corner at a held vertex) gets its two chords split: the strips of quads that cross it are
+  cut in two along their length (every edge they cross gets its midpoint, put onto the surface or onto
+  the feature line of a constrained edge; their quads are cut in two, in four where they cross), which
+  keeps the mesh pure-quad and conforming and changes no vertex's valence. The untangling then runs
+  around the split, and the split is kept only if fewer quads are inverted than before; otherwise it is
+  undone, and each chord alone is tried. This is the only change `smooth_quad_mesh()` makes to the
+  connectivity; a chord with more than `max(64, #quads / 10)` edges is not split.
+
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
   @tparam EdgeFeatureMap a model of `ReadablePropertyMap` with the triangle mesh's `edge_descriptor`
@@ -263,9 +288,9 @@ struct Feature_lines
     \cgalParamNEnd
     \cgalParamNBegin{edge_is_constrained_map}
       \cgalParamDescription{the edges of `qmesh` that lie on feature lines of `tmesh`}
-      \cgalParamType{a model of `ReadablePropertyMap` with `qmesh`'s `edge_descriptor` as key type and `bool` as value type}
+      \cgalParamType{a model of `ReadWritePropertyMap` with `qmesh`'s `edge_descriptor` as key type and `bool` as value type}
       \cgalParamDefault{the boundary edges of `qmesh`}
-      \cgalParamExtra{a vertex with two incident constrained edges slides along its feature line; with another number it does not move}
+      \cgalParamExtra{a vertex with two incident constrained edges slides along its feature line; with another number it does not move. Both halves of a constrained edge that a chord split cuts are set to `true`, every other new edge to `false`}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_is_constrained_map}
       \cgalParamDescription{vertices of `qmesh` that must not move}
@@ -513,12 +538,22 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     put(qvpm, v, best_p);
     return best_p != old_p;
   };
-  auto untangle = [&](unsigned max_passes) {
+  // the poor quads among `within`, or among all quads
+  auto poor_quads = [&](const std::vector<q_face>* within) {
+    std::vector<q_face> poor;
+    auto collect = [&](const auto& range) {
+      for(q_face f : range)
+        if(quad_sj(f) <= poor_sj) poor.push_back(f);
+    };
+    if(within) collect(*within);
+    else collect(faces(qmesh));
+    return poor;
+  };
+  // (`within`: only the poor quads among these to start with; by default all)
+  auto untangle = [&](unsigned max_passes, const std::vector<q_face>* within = nullptr) {
     // every quad that gets worse is around a vertex that moved, so the work list of a pass is the bad
     // quads around the previous pass's candidates
-    std::vector<q_face> bad;
-    for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= poor_sj) bad.push_back(f);
+    std::vector<q_face> bad = poor_quads(within);
     for(unsigned pass = 0; pass < max_passes && !bad.empty(); ++pass)
     {
       std::vector<q_vertex> candidates;
@@ -615,10 +650,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return std::make_pair(before, after);
   };
   // each group of poor quads that share vertices is relaxed with the width (1 to 4 rings) that scores best
-  auto relax_tangled_regions = [&]() {
-    std::vector<q_face> poor;
-    for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= poor_sj) poor.push_back(f);
+  auto relax_tangled_regions = [&](const std::vector<q_face>* within = nullptr) {
+    std::vector<q_face> poor = poor_quads(within);
     std::sort(poor.begin(), poor.end());
     std::vector<bool> grouped(poor.size(), false);
     bool changed = false;
@@ -708,6 +741,185 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   }
   untangle(20);
   if(relax_tangled_regions()) untangle(20);
+
+  // Refinement, for what no move undoes: a quad folded over a bend of the surface smaller than itself,
+  // or with a corner at a vertex that is held. Both chords through such a quad (the strips of quads
+  // that enter and leave through opposite edges) are split in two along their length: every edge they
+  // cross gets its midpoint, every quad on one of them is cut in two (in four where they cross), and no
+  // vertex's valence changes, so the mesh stays pure-quad and conforming with no new irregular vertex.
+  // The new vertices go onto the surface (onto the feature line for the midpoint of a constrained
+  // edge), the untangling runs again, and the split is kept only if fewer quads are inverted than
+  // before; otherwise it is undone. A chord longer than `max_chord` edges is not split.
+  typedef typename QGT::edge_descriptor q_edge;
+  const std::size_t n_faces = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
+  const std::size_t max_chord = (std::max<std::size_t>)(64, n_faces / 10);
+  auto count_inverted = [&]() {
+    std::size_t n = 0;
+    for(q_face f : faces(qmesh))
+      if(quad_sj(f) <= 0.) ++n;
+    return n;
+  };
+  auto is_quad = [&](q_face f) { return CGAL::halfedges_around_face(halfedge(f, qmesh), qmesh).size() == 4; };
+  auto on_chord = get(CGAL::dynamic_edge_property_t<bool>(), qmesh);
+  for(q_edge e : edges(qmesh)) put(on_chord, e, false);
+  // the edges of the chords through quad f (which: 1 or 2 the one through the edge of halfedge(f) or
+  // the next one, 3 both), or nothing when one is too long or meets a non-quad
+  auto chords_through = [&](q_face f, int which, std::vector<q_edge>& chord) {
+    chord.clear();
+    bool ok = is_quad(f);
+    const q_halfedge h0 = halfedge(f, qmesh);
+    std::vector<q_halfedge> starts;
+    if(which & 1) { starts.push_back(h0); starts.push_back(next(next(h0, qmesh), qmesh)); }
+    if(which & 2) { starts.push_back(next(h0, qmesh)); starts.push_back(prev(h0, qmesh)); }
+    for(q_halfedge start : starts)
+      for(q_halfedge g = start; ok && !get(on_chord, edge(g, qmesh));)
+      {
+        put(on_chord, edge(g, qmesh), true);
+        chord.push_back(edge(g, qmesh));
+        const q_halfedge o = opposite(g, qmesh);
+        if(is_border(o, qmesh)) break;
+        if(chord.size() > 2 * max_chord || !is_quad(face(o, qmesh))) ok = false;
+        else g = next(next(o, qmesh), qmesh);
+      }
+    for(q_edge e : chord) put(on_chord, e, false);
+    if(!ok) chord.clear();
+    return ok;
+  };
+  auto is_new = get(CGAL::dynamic_vertex_property_t<bool>(), qmesh);
+  for(q_vertex v : vertices(qmesh)) put(is_new, v, false);
+  // splits the chords: fills the undo list, in order, with a halfedge of each added edge (joining its
+  // faces undoes it) and, for each vertex added by splitting an edge, the halfedge from that vertex along
+  // the added half (joining along it removes both and leaves the original edge)
+  enum Op { ADDED_VERTEX, ADDED_EDGE };
+  auto split_chords = [&](const std::vector<q_edge>& chord, std::vector<std::pair<Op, q_halfedge>>& ops,
+                          std::vector<q_vertex>& added) {
+    std::vector<q_face> cut;
+    for(q_edge e : chord)
+      for(q_halfedge h : {halfedge(e, qmesh), opposite(halfedge(e, qmesh), qmesh)})
+        if(!is_border(h, qmesh)) cut.push_back(face(h, qmesh));
+    std::sort(cut.begin(), cut.end());
+    cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+    for(q_edge e : chord)
+    {
+      const q_halfedge h = halfedge(e, qmesh);
+      const Point_3 a = get(qvpm, source(h, qmesh)), b = get(qvpm, target(h, qmesh));
+      const bool constrained = get(qecm, e);
+      const q_halfedge hn = CGAL::Euler::split_edge(h, qmesh); // source(h) -> m, then h: m -> target(h)
+      const q_vertex m = target(hn, qmesh);
+      put(qecm, edge(hn, qmesh), constrained);
+      put(is_new, m, true);
+      const Point_3 mid = CGAL::midpoint(a, b);
+      if(constrained && !lines.lines.empty())
+      {
+        double d;
+        put(line_of, m, lines.nearest_line(mid, d));
+        put(kind, m, 1);
+        put(qvpm, m, lines.project(get(line_of, m), mid));
+      }
+      else
+      {
+        put(kind, m, constrained ? 2 : 0);
+        put(qvpm, m, constrained ? mid : tree.closest_point(mid));
+      }
+      ops.emplace_back(ADDED_VERTEX, opposite(hn, qmesh));
+      added.push_back(m);
+    }
+    // a face with 6 corners (two midpoints) is cut between them; one with 8 (four) between two
+    // opposite ones, and that cut is split at a centre joined to the other two
+    auto cut_hexagon = [&](q_face f, auto is_end) { // from a corner `is_end` to the third one after it
+      std::vector<q_halfedge> hs;
+      for(q_halfedge h : halfedges_around_face(halfedge(f, qmesh), qmesh)) hs.push_back(h);
+      if(hs.size() != 6) return;
+      for(std::size_t i = 0; i < 6; ++i)
+        if(is_end(target(hs[i], qmesh)))
+        {
+          ops.emplace_back(ADDED_EDGE, CGAL::Euler::split_face(hs[i], hs[(i + 3) % 6], qmesh));
+          return;
+        }
+    };
+    for(q_face f : cut)
+    {
+      std::vector<q_halfedge> hs;
+      for(q_halfedge h : halfedges_around_face(halfedge(f, qmesh), qmesh)) hs.push_back(h);
+      if(hs.size() == 6)
+        cut_hexagon(f, [&](q_vertex v) { return get(is_new, v); });
+      else if(hs.size() == 8)
+      {
+        std::size_t i = get(is_new, target(hs[0], qmesh)) ? 0 : 1;
+        const q_halfedge d = CGAL::Euler::split_face(hs[i], hs[i + 4], qmesh);
+        ops.emplace_back(ADDED_EDGE, d);
+        const Point_3 c = CGAL::midpoint(CGAL::midpoint(get(qvpm, target(hs[i], qmesh)), get(qvpm, target(hs[i + 4], qmesh))),
+                                         CGAL::midpoint(get(qvpm, target(hs[i + 2], qmesh)), get(qvpm, target(hs[i + 6], qmesh))));
+        const q_halfedge hc = CGAL::Euler::split_edge(d, qmesh);
+        const q_vertex o = target(hc, qmesh);
+        put(qecm, edge(hc, qmesh), false);
+        put(kind, o, 0);
+        put(qvpm, o, tree.closest_point(c));
+        ops.emplace_back(ADDED_VERTEX, opposite(hc, qmesh));
+        added.push_back(o);
+        const q_face f1 = face(d, qmesh), f2 = face(opposite(d, qmesh), qmesh);
+        for(q_face g : {f1, f2}) cut_hexagon(g, [&](q_vertex v) { return v == o; });
+      }
+    }
+    for(q_vertex v : added) put(is_new, v, false);
+  };
+  auto undo = [&](const std::vector<std::pair<Op, q_halfedge>>& ops) {
+    for(auto it = ops.rbegin(); it != ops.rend(); ++it)
+    {
+      if(it->first == ADDED_EDGE) CGAL::Euler::join_face(it->second, qmesh);
+      else CGAL::Euler::join_vertex(it->second, qmesh);
+    }
+  };
+  bool removed_elements = false;
+  for(int round = 0; round < 4; ++round)
+  {
+    std::vector<q_face> inverted;
+    for(q_face f : faces(qmesh))
+      if(quad_sj(f) <= 0.) inverted.push_back(f);
+    if(inverted.empty()) break;
+    bool changed = false;
+    for(q_face f : inverted)
+    {
+      for(int which : {3, 1, 2})
+      {
+      if(quad_sj(f) > 0.) break; // mended by an earlier split
+      std::vector<q_edge> chord;
+      if(!chords_through(f, which, chord) || chord.empty()) continue;
+      const std::size_t before = count_inverted();
+      std::vector<std::pair<q_vertex, Point_3>> positions;
+      for(q_vertex v : vertices(qmesh)) positions.emplace_back(v, get(qvpm, v));
+      std::vector<std::pair<Op, q_halfedge>> ops;
+      std::vector<q_vertex> added;
+      const std::size_t faces_before = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
+      split_chords(chord, ops, added);
+      // the quads around the split and the inverted quad, where the untangling starts
+      std::vector<q_face> near;
+      std::vector<q_vertex> seeds(added);
+      for(q_vertex v : vertices_around_face(halfedge(f, qmesh), qmesh)) seeds.push_back(v);
+      for(q_vertex v : seeds)
+        for(q_face g : faces_around_target(halfedge(v, qmesh), qmesh))
+          if(g != QGT::null_face()) near.push_back(g);
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+      untangle(20, &near);
+      if(relax_tangled_regions(&near)) untangle(20, &near);
+      if(count_inverted() < before)
+      {
+        ++stats.refined_chords;
+        stats.refinement_quads += std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end())) - faces_before;
+        changed = true;
+      }
+      else
+      {
+        undo(ops);
+        for(const auto& vp : positions) put(qvpm, vp.first, vp.second);
+        removed_elements = true;
+      }
+      }
+    }
+    if(!changed) break;
+  }
+  if(removed_elements) internal::collect_garbage_of(qmesh);
   sj_figures(stats.min_scaled_jacobian_after, stats.mean_scaled_jacobian_after, stats.inverted_after);
   stats.seconds = timer.time();
   if(verbose)
@@ -716,7 +928,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
               << stats.min_scaled_jacobian_before << " -> " << stats.min_scaled_jacobian_after << ", mean "
               << stats.mean_scaled_jacobian_before << " -> " << stats.mean_scaled_jacobian_after << ", quads with scaled Jacobian <= 0 "
               << stats.inverted_before << " -> " << stats.inverted_after << " (" << stats.untangling_moves
-              << " untangling moves) (" << stats.seconds << " s)\n";
+              << " untangling moves, " << stats.refined_chords << " chord splits adding " << stats.refinement_quads
+              << " quads) (" << stats.seconds << " s)\n";
   return stats;
 }
 
