@@ -53,7 +53,8 @@ struct Quad_smoothing_statistics
   std::size_t inverted_after = 0;     ///< quads with a scaled Jacobian <= 0 after smoothing
   std::size_t untangling_moves = 0;   ///< vertex moves made to untangle quads with a scaled Jacobian <= 0
   std::size_t refined_chords = 0;     ///< chords split in two because a quad on them stayed inverted
-  std::size_t refinement_quads = 0;   ///< quads added by those splits
+  std::size_t inset_quads = 0;        ///< inverted quads replaced by an inner quad and four around it
+  std::size_t refinement_quads = 0;   ///< quads added by the chord splits and the insets
   double min_scaled_jacobian_before = 0.;  ///< over all quads, before smoothing
   double min_scaled_jacobian_after = 0.;   ///< over all quads, after smoothing
   double mean_scaled_jacobian_before = 0.; ///< over all quads, before smoothing
@@ -74,6 +75,7 @@ struct Quad_smoothing_statistics
     r["inverted_after"] = inverted_after;
     r["untangling_moves"] = untangling_moves;
     r["refined_chords"] = refined_chords;
+    r["inset_quads"] = inset_quads;
     r["refinement_quads"] = refinement_quads;
     r["min_scaled_jacobian_before"] = min_scaled_jacobian_before;
     r["min_scaled_jacobian_after"] = min_scaled_jacobian_after;
@@ -792,8 +794,15 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // splits the chords: fills the undo list, in order, with a halfedge of each added edge (joining its
   // faces undoes it) and, for each vertex added by splitting an edge, the halfedge from that vertex along
   // the added half (joining along it removes both and leaves the original edge)
-  enum Op { ADDED_VERTEX, ADDED_EDGE };
-  auto split_chords = [&](const std::vector<q_edge>& chord, std::vector<std::pair<Op, q_halfedge>>& ops,
+  enum Op { ADDED_VERTEX, ADDED_EDGE, REMOVED_EDGE };
+  struct Undo_entry
+  {
+    Op op;
+    q_halfedge h;
+    std::size_t entry = 0; // REMOVED_EDGE: the entry to point at the edge that undoing it adds
+    Undo_entry(Op o, q_halfedge g, std::size_t k = 0) : op(o), h(g), entry(k) {}
+  };
+  auto split_chords = [&](const std::vector<q_edge>& chord, std::vector<Undo_entry>& ops,
                           std::vector<q_vertex>& added) {
     std::vector<q_face> cut;
     for(q_edge e : chord)
@@ -865,58 +874,130 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     for(q_vertex v : added) put(is_new, v, false);
   };
-  auto undo = [&](const std::vector<std::pair<Op, q_halfedge>>& ops) {
-    for(auto it = ops.rbegin(); it != ops.rend(); ++it)
+  // Inset: quad (c0, c1, c2, c3) becomes an inner quad (r, q, s, p) and four quads around it, so that
+  // every corner gets an edge into the quad (c0-p, c1-r, c2-q, c3-s), which splits a corner that no
+  // move can mend (a held vertex whose corner is at 180 degrees or more). Built from the diagonal c0-c2,
+  // split at p and q; c1 is joined to q, that edge split at r and r joined to p; c3 is joined to p,
+  // that edge split at s and s joined to q; the two triangles (r, q, p) and (s, p, q) are then merged.
+  // Undoing the merge splits the face again from e1's target (q) to e3's target (p); the undo entry of
+  // q, which named the merged edge, is then pointed at the new one.
+  auto inset_quad = [&](q_face f, std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
+    std::vector<q_halfedge> hs; // hs[i] ends at corner i
+    for(q_halfedge h : halfedges_around_face(halfedge(f, qmesh), qmesh)) hs.push_back(h);
+    if(hs.size() != 4) return false;
+    Vector_3 centre = CGAL::NULL_VECTOR;
+    for(q_halfedge h : hs) centre = centre + (get(qvpm, target(h, qmesh)) - CGAL::ORIGIN) / 4.;
+    auto new_vertex = [&](q_halfedge hn, int corner) {
+      const q_vertex v = target(hn, qmesh);
+      const Point_3 c = get(qvpm, target(hs[corner], qmesh));
+      put(qvpm, v, tree.closest_point(c + 0.35 * ((CGAL::ORIGIN + centre) - c)));
+      put(kind, v, 0);
+      put(qecm, edge(hn, qmesh), false);
+      added.push_back(v);
+      ops.emplace_back(ADDED_VERTEX, opposite(hn, qmesh));
+    };
+    auto new_edge = [&](q_halfedge h1, q_halfedge h2) {
+      const q_halfedge e = CGAL::Euler::split_face(h1, h2, qmesh);
+      put(qecm, edge(e, qmesh), false);
+      ops.emplace_back(ADDED_EDGE, e);
+      return e;
+    };
+    const q_halfedge d = new_edge(hs[0], hs[2]);                 // c0 -> c2
+    const q_halfedge h1 = CGAL::Euler::split_edge(d, qmesh);     // c0 -> p, d: p -> c2
+    new_vertex(h1, 0);
+    const q_halfedge h2 = CGAL::Euler::split_edge(d, qmesh);     // p -> q, d: q -> c2
+    new_vertex(h2, 2);
+    const std::size_t q_entry = ops.size() - 1;
+    const q_halfedge e1 = new_edge(hs[1], opposite(d, qmesh));  // c1 -> q
+    const q_halfedge hr = CGAL::Euler::split_edge(e1, qmesh);    // c1 -> r, e1: r -> q
+    new_vertex(hr, 1);
+    new_edge(hr, opposite(h2, qmesh));                           // r -> p
+    const q_halfedge e3 = new_edge(hs[3], h1);                   // c3 -> p
+    const q_halfedge hs3 = CGAL::Euler::split_edge(e3, qmesh);   // c3 -> s, e3: s -> p
+    new_vertex(hs3, 3);
+    new_edge(hs3, h2);                                           // s -> q
+    CGAL::Euler::join_face(h2, qmesh);
+    ops.emplace_back(REMOVED_EDGE, e1, q_entry);
+    ops.emplace_back(REMOVED_EDGE, e3, q_entry);
+    return true;
+  };
+  auto undo = [&](std::vector<Undo_entry>& ops) {
+    for(std::size_t k = ops.size(); k-- > 0;)
     {
-      if(it->first == ADDED_EDGE) CGAL::Euler::join_face(it->second, qmesh);
-      else CGAL::Euler::join_vertex(it->second, qmesh);
+      if(ops[k].op == REMOVED_EDGE)
+      {
+        // entries k - 1 and k: e1 and e3 of an inset
+        ops[ops[k].entry].h = CGAL::Euler::split_face(ops[k - 1].h, ops[k].h, qmesh);
+        --k;
+      }
+      else if(ops[k].op == ADDED_EDGE) CGAL::Euler::join_face(ops[k].h, qmesh);
+      else CGAL::Euler::join_vertex(ops[k].h, qmesh);
     }
   };
+  // one try: `change` alters the mesh around the quad of halfedge `fh` (filling the undo list and the
+  // added vertices); the untangling runs around it, and it stays if fewer quads are then inverted
   bool removed_elements = false;
+  auto try_change = [&](q_halfedge fh, auto change) {
+    const std::size_t before = count_inverted();
+    std::vector<std::pair<q_vertex, Point_3>> positions;
+    for(q_vertex v : vertices(qmesh)) positions.emplace_back(v, get(qvpm, v));
+    std::vector<Undo_entry> ops;
+    std::vector<q_vertex> added;
+    const std::size_t faces_before = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
+    if(!change(ops, added)) return false;
+    // the quads around the change and the inverted quad, where the untangling starts
+    std::vector<q_face> near;
+    std::vector<q_vertex> seeds(added);
+    for(q_vertex v : vertices_around_face(fh, qmesh)) seeds.push_back(v);
+    for(q_vertex v : seeds)
+      for(q_face g : faces_around_target(halfedge(v, qmesh), qmesh))
+        if(g != QGT::null_face()) near.push_back(g);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    untangle(20, &near);
+    if(relax_tangled_regions(&near)) untangle(20, &near);
+    if(count_inverted() < before)
+    {
+      stats.refinement_quads += std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end())) - faces_before;
+      return true;
+    }
+    undo(ops);
+    for(const auto& vp : positions) put(qvpm, vp.first, vp.second);
+    removed_elements = true;
+    return false;
+  };
   for(int round = 0; round < 4; ++round)
   {
-    std::vector<q_face> inverted;
+    // the inverted quads by one of their halfedges: an edge of the mesh before a change survives any
+    // later change and its undoing, while a face index may not
+    std::vector<q_halfedge> inverted;
     for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= 0.) inverted.push_back(f);
+      if(quad_sj(f) <= 0.) inverted.push_back(halfedge(f, qmesh));
     if(inverted.empty()) break;
     bool changed = false;
-    for(q_face f : inverted)
+    for(q_halfedge fh : inverted)
     {
       for(int which : {3, 1, 2})
       {
-      if(quad_sj(f) > 0.) break; // mended by an earlier split
-      std::vector<q_edge> chord;
-      if(!chords_through(f, which, chord) || chord.empty()) continue;
-      const std::size_t before = count_inverted();
-      std::vector<std::pair<q_vertex, Point_3>> positions;
-      for(q_vertex v : vertices(qmesh)) positions.emplace_back(v, get(qvpm, v));
-      std::vector<std::pair<Op, q_halfedge>> ops;
-      std::vector<q_vertex> added;
-      const std::size_t faces_before = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
-      split_chords(chord, ops, added);
-      // the quads around the split and the inverted quad, where the untangling starts
-      std::vector<q_face> near;
-      std::vector<q_vertex> seeds(added);
-      for(q_vertex v : vertices_around_face(halfedge(f, qmesh), qmesh)) seeds.push_back(v);
-      for(q_vertex v : seeds)
-        for(q_face g : faces_around_target(halfedge(v, qmesh), qmesh))
-          if(g != QGT::null_face()) near.push_back(g);
-      std::sort(near.begin(), near.end());
-      near.erase(std::unique(near.begin(), near.end()), near.end());
-      untangle(20, &near);
-      if(relax_tangled_regions(&near)) untangle(20, &near);
-      if(count_inverted() < before)
+        if(quad_sj(face(fh, qmesh)) > 0.) break; // mended by an earlier change
+        std::vector<q_edge> chord;
+        if(!chords_through(face(fh, qmesh), which, chord) || chord.empty()) continue;
+        if(try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
+             split_chords(chord, ops, added);
+             return true;
+           }))
+        {
+          ++stats.refined_chords;
+          changed = true;
+        }
+      }
+      if(quad_sj(face(fh, qmesh)) <= 0. &&
+         try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
+           return inset_quad(face(fh, qmesh), ops, added);
+         }))
       {
-        ++stats.refined_chords;
-        stats.refinement_quads += std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end())) - faces_before;
+        ++stats.inset_quads;
         changed = true;
-      }
-      else
-      {
-        undo(ops);
-        for(const auto& vp : positions) put(qvpm, vp.first, vp.second);
-        removed_elements = true;
-      }
       }
     }
     if(!changed) break;
@@ -930,7 +1011,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
               << stats.min_scaled_jacobian_before << " -> " << stats.min_scaled_jacobian_after << ", mean "
               << stats.mean_scaled_jacobian_before << " -> " << stats.mean_scaled_jacobian_after << ", quads with scaled Jacobian <= 0 "
               << stats.inverted_before << " -> " << stats.inverted_after << " (" << stats.untangling_moves
-              << " untangling moves, " << stats.refined_chords << " chord splits adding " << stats.refinement_quads
+              << " untangling moves, " << stats.refined_chords << " chord splits and " << stats.inset_quads << " insets adding " << stats.refinement_quads
               << " quads) (" << stats.seconds << " s)\n";
   return stats;
 }
