@@ -124,6 +124,26 @@ BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
   BOOST_TEST(r.find("smooth")->find("inverted_after")->number() == 0.);
 }
 
+// elephant: a quad at a held vertex (a spur of two short feature edges where three lines meet) kept a
+// corner past 180 degrees that no move could mend, and both chords through it wind over most of the
+// surface (too long to split); the smoothing insets it, which gives that vertex an edge into the quad.
+BOOST_AUTO_TEST_CASE(elephant_quad_at_a_held_spur_is_inset)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("elephant.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q);
+  const QR::Report& smooth = *r.find("smooth");
+  BOOST_TEST(smooth.find("inset_quads")->number() >= 1.);
+  BOOST_TEST(smooth.find("inverted_after")->number() == 0.);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(quality.min_scaled_jacobian > 0.);
+  BOOST_TEST(q.is_valid(false));
+  BOOST_TEST(!q.has_garbage());
+}
+
 // chair_doublesided (every face twice, in both orientations, many non-manifold edges) repairs into
 // thin closed sheets whose layout has patches with slits and bridges (sides that walk an arc there
 // and back): the assembly must cut them open, and the result must still be a valid quad mesh.

@@ -204,8 +204,8 @@ struct Feature_lines
   }
 };
 
-// A refinement that is undone leaves removed elements in a `Surface_mesh`: they go, so that the output
-// has consecutive indices; other meshes remove elements at once.
+// An inset (which merges two faces) or an undone refinement leaves removed elements in a `Surface_mesh`:
+// they go, so that the output has consecutive indices; other meshes remove elements at once.
 template <typename P>
 void collect_garbage_of(CGAL::Surface_mesh<P>& m)
 {
@@ -256,9 +256,12 @@ void collect_garbage_of(Mesh&) {}
   the feature line of a constrained edge; their quads are cut in two, in four where they cross), which
   keeps the mesh pure-quad and conforming and changes no vertex's valence. The untangling then runs
   around the split, and the split is kept only if fewer quads are inverted than before; otherwise it is
-  undone, and each chord alone is tried. This is the only change `smooth_quad_mesh()` makes to the
-  connectivity; chords that cross more than `max(128, #quads / 5)` edges in all are not split (on
-  organic meshes one can wind over most of the surface: on elephant, 6572 edges).
+  undone, and each chord alone is tried; chords that cross more than `max(128, #quads / 5)` edges in
+  all are not split (on organic meshes one can wind over most of the surface: on elephant, 6572
+  edges). A quad still inverted then is inset: it becomes an inner quad and four quads around it, so
+  that each of its corners gets an edge into it (which splits a corner at a held vertex that no move
+  can mend), kept on the same condition. These are the only changes `smooth_quad_mesh()` makes to the
+  connectivity (a `Surface_mesh`'s removed elements are then collected).
 
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
@@ -752,7 +755,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // vertex's valence changes, so the mesh stays pure-quad and conforming with no new irregular vertex.
   // The new vertices go onto the surface (onto the feature line for the midpoint of a constrained
   // edge), the untangling runs again, and the split is kept only if fewer quads are inverted than
-  // before; otherwise it is undone. Chords that cross more than `max_split_edges` edges are not split
+  // before; otherwise it is undone. When no split mends the quad, it is inset (see inset_quad()). Chords that cross more than `max_split_edges` edges are not split
   // (on organic meshes a chord can wind over most of the surface).
   typedef typename QGT::edge_descriptor q_edge;
   const std::size_t n_faces = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
@@ -936,7 +939,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   };
   // one try: `change` alters the mesh around the quad of halfedge `fh` (filling the undo list and the
   // added vertices); the untangling runs around it, and it stays if fewer quads are then inverted
-  bool removed_elements = false;
+  bool changed_connectivity = false;
   auto try_change = [&](q_halfedge fh, auto change) {
     const std::size_t before = count_inverted();
     std::vector<std::pair<q_vertex, Point_3>> positions;
@@ -945,6 +948,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     std::vector<q_vertex> added;
     const std::size_t faces_before = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
     if(!change(ops, added)) return false;
+    changed_connectivity = true;
     // the quads around the change and the inverted quad, where the untangling starts
     std::vector<q_face> near;
     std::vector<q_vertex> seeds(added);
@@ -963,7 +967,6 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     undo(ops);
     for(const auto& vp : positions) put(qvpm, vp.first, vp.second);
-    removed_elements = true;
     return false;
   };
   for(int round = 0; round < 4; ++round)
@@ -1002,7 +1005,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     if(!changed) break;
   }
-  if(removed_elements) internal::collect_garbage_of(qmesh);
+  if(changed_connectivity) internal::collect_garbage_of(qmesh);
   sj_figures(stats.min_scaled_jacobian_after, stats.mean_scaled_jacobian_after, stats.inverted_after);
   stats.seconds = timer.time();
   if(verbose)
