@@ -44,7 +44,7 @@ namespace Quad_remeshing {
 struct Quad_smoothing_statistics
 {
   unsigned iterations = 0;            ///< smoothing iterations done
-  bool stopped_early = false;         ///< whether `maximum_running_time` ended the iterations
+  bool stopped_early = false;         ///< whether `maximum_running_time` ended the iterations or the refinement
   std::size_t free_vertices = 0;      ///< vertices that move on the surface
   std::size_t feature_vertices = 0;   ///< vertices that slide along a feature line
   std::size_t fixed_vertices = 0;     ///< vertices that never move (feature corners, constrained vertices)
@@ -261,7 +261,8 @@ void collect_garbage_of(Mesh&) {}
   edges). A quad still inverted then is inset: it becomes an inner quad and four quads around it, so
   that each of its corners gets an edge into it (which splits a corner at a held vertex that no move
   can mend), kept on the same condition. These are the only changes `smooth_quad_mesh()` makes to the
-  connectivity (a `Surface_mesh`'s removed elements are then collected).
+  connectivity (a `Surface_mesh`'s removed elements are then collected). At most 64 quads are tried
+  in each of at most four rounds, and none once `maximum_running_time` is reached.
 
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
@@ -969,6 +970,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     for(const auto& vp : positions) put(qvpm, vp.first, vp.second);
     return false;
   };
+  const std::size_t max_refined_quads = 64;
   for(int round = 0; round < 4; ++round)
   {
     // the inverted quads by one of their halfedges: an edge of the mesh before a change survives any
@@ -977,9 +979,13 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     for(q_face f : faces(qmesh))
       if(quad_sj(f) <= 0.) inverted.push_back(halfedge(f, qmesh));
     if(inverted.empty()) break;
+    // every try counts the inverted quads over the whole mesh: a bounded number of tries keeps a mesh
+    // with very many inverted quads from taking quadratic time, and the time limit is respected
+    if(inverted.size() > max_refined_quads) inverted.resize(max_refined_quads);
     bool changed = false;
     for(q_halfedge fh : inverted)
     {
+      if(time_limit > 0. && timer.time() >= time_limit) { stats.stopped_early = true; break; }
       for(int which : {3, 1, 2})
       {
         if(quad_sj(face(fh, qmesh)) > 0.) break; // mended by an earlier change
