@@ -756,8 +756,9 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // vertex's valence changes, so the mesh stays pure-quad and conforming with no new irregular vertex.
   // The new vertices go onto the surface (onto the feature line for the midpoint of a constrained
   // edge), the untangling runs again, and the split is kept only if fewer quads are inverted than
-  // before; otherwise it is undone. When no split mends the quad, it is inset (see inset_quad()). Chords that cross more than `max_split_edges` edges are not split
-  // (on organic meshes a chord can wind over most of the surface).
+  // before; otherwise it is undone. When no split mends the quad, it is inset (see inset_quad()).
+  // Chords that cross more than `max_split_edges` edges are not split (on organic meshes a chord can
+  // wind over most of the surface).
   typedef typename QGT::edge_descriptor q_edge;
   const std::size_t n_faces = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
   const std::size_t max_split_edges = (std::max<std::size_t>)(128, n_faces / 5);
@@ -824,18 +825,16 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       put(qecm, edge(hn, qmesh), constrained);
       put(is_new, m, true);
       const Point_3 mid = CGAL::midpoint(a, b);
+      // a constrained midpoint slides on its feature line; without lines it is held where it is
       if(constrained && !lines.lines.empty())
       {
         double d;
         put(line_of, m, lines.nearest_line(mid, d));
         put(kind, m, 1);
-        put(qvpm, m, lines.project(get(line_of, m), mid));
       }
       else
-      {
         put(kind, m, constrained ? 2 : 0);
-        put(qvpm, m, constrained ? mid : tree.closest_point(mid));
-      }
+      put(qvpm, m, get(kind, m) == 2 ? mid : place(m, mid));
       ops.emplace_back(ADDED_VERTEX, opposite(hn, qmesh));
       added.push_back(m);
     }
@@ -869,7 +868,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
         const q_vertex o = target(hc, qmesh);
         put(qecm, edge(hc, qmesh), false);
         put(kind, o, 0);
-        put(qvpm, o, tree.closest_point(c));
+        put(qvpm, o, place(o, c));
         ops.emplace_back(ADDED_VERTEX, opposite(hc, qmesh));
         added.push_back(o);
         const q_face f1 = face(d, qmesh), f2 = face(opposite(d, qmesh), qmesh);
@@ -894,8 +893,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     auto new_vertex = [&](q_halfedge hn, int corner) {
       const q_vertex v = target(hn, qmesh);
       const Point_3 c = get(qvpm, target(hs[corner], qmesh));
-      put(qvpm, v, tree.closest_point(c + 0.35 * ((CGAL::ORIGIN + centre) - c)));
       put(kind, v, 0);
+      put(qvpm, v, place(v, c + 0.35 * ((CGAL::ORIGIN + centre) - c)));
       put(qecm, edge(hn, qmesh), false);
       added.push_back(v);
       ops.emplace_back(ADDED_VERTEX, opposite(hn, qmesh));
