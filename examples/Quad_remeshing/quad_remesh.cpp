@@ -61,7 +61,8 @@ bool stage_available(const std::string& name)
 
 const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
-  "                   [--sizing-tolerance F] [--feature-angle DEG] [--features FILE]\n"
+  "                   [--sizing-tolerance F] [--feature-tolerance F] [--feature-angle DEG]\n"
+  "                   [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
   "                   [--html FILE.html] [--adaptive-remeshing] [--verbose | --quiet] [--help]\n"
@@ -76,6 +77,8 @@ const char* usage_text =
   "  --sizing-tolerance F smaller quads (down to a quarter) where the surface or a feature line bends,\n"
   "                       keeping a quad's sagitta under F times the bounding-box diagonal (default 0:\n"
   "                       uniform; e.g. 0.002 brings curved meshes closer to the input, with more quads)\n"
+  "  --feature-tolerance F quad edges along a bent feature line stay within F times the bounding-box\n"
+  "                       diagonal of the line (default 0.002; 0: no bound)\n"
   "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
   "  --features FILE      use these feature edges instead of detecting them (CGAL .polylines.txt\n"
   "                       or one 'i j' vertex-index pair per line)\n"
@@ -107,7 +110,8 @@ struct Usage_error : std::runtime_error
 struct Options
 {
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
-  double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.;
+  double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.,
+         feature_tolerance = QR::internal::default_feature_tolerance;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false;
@@ -160,6 +164,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--threads") o.threads = unsigned(parse_number(a, value(), 1.));
     else if(a == "--time-limit") o.time_limit = parse_number(a, value(), 0.);
     else if(a == "--sizing-tolerance") o.sizing_tolerance = parse_number(a, value(), 0.);
+    else if(a == "--feature-tolerance") o.feature_tolerance = parse_number(a, value(), 0.);
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
@@ -423,8 +428,10 @@ private:
                                                                                                    *state_.layout);
     const std::vector<double> sizing =
       QR::internal::quad_sizing(state_.tmesh, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance);
-    const QR::Side_quantization_problem pb =
+    QR::Side_quantization_problem pb =
       QR::internal::quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.quad_edge_length, sizing);
+    const std::size_t bent_arcs = QR::internal::set_feature_chord_minimums(pb, state_.tmesh, *state_.layout, *state_.polygons, state_.feature,
+                                             opt_.feature_tolerance);
     if(!opt_.dump_dir.empty())
     {
       std::ofstream f(opt_.dump_dir + "/6_quantization_problem.txt");
@@ -437,6 +444,8 @@ private:
     QR::Report r = st.report();
     budget_.record("quantize", r);
     r["sizing_tolerance"] = opt_.sizing_tolerance;
+    r["feature_tolerance"] = opt_.feature_tolerance;
+    r["bent_feature_arcs"] = bent_arcs;
     if(!sizing.empty()) r["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
     r["relaxed_patches"] = state_.polygons->relaxed_patches;
     r["added_corners"] = state_.polygons->added_corners;

@@ -5,6 +5,7 @@
 #include <CGAL/Quad_remeshing/cross_field.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -818,6 +819,26 @@ BOOST_AUTO_TEST_CASE(closed_featureless_mesh_is_cut_into_disks)
   BOOST_TEST(s.layout.patches > 10u);
   for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(layout.validity(p) != Layout::NOT_A_DISK);
   BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9);
+}
+
+// The fewest equal arc-length chords that follow a quarter circle of radius 1 within a tolerance: the
+// sagitta of n chords is 1 - cos(pi / (4 n)), so 0.01 needs 6 chords (5 leave 0.0123) and 0.05 needs
+// 3 (2 leave 0.076); a straight line needs 1, and the cap bounds the count.
+BOOST_AUTO_TEST_CASE(chord_minimum_of_a_quarter_circle)
+{
+  namespace QRI = CGAL::Quad_remeshing::internal;
+  std::vector<Point_3> arc, line;
+  for(int i = 0; i <= 360; ++i) {
+    const double a = 0.5 * CGAL_PI * i / 360.;
+    arc.emplace_back(std::cos(a), std::sin(a), 0.);
+    line.emplace_back(i / 360., 2. * i / 360., 0.);
+  }
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(arc, 0.01, 100), 6);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(arc, 0.05, 100), 3);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(arc, 0.5, 100), 1);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(arc, 0.01, 4), 4);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(line, 1e-9, 100), 1);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(std::vector<Point_3>{Point_3(0, 0, 0), Point_3(1, 0, 0)}, 1e-9, 100), 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -121,5 +121,8 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads, 
 /// if > 0, quads get smaller where the surface or a feature line bends, so that a quad's sagitta
 /// stays under this fraction of the bounding-box diagonal (`double`, 0 = uniform quad edge length)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(sizing_tolerance_t, sizing_tolerance, sizing_tolerance)
+/// the quad edges along a bent feature line stay within this fraction of the bounding-box diagonal of
+/// the line (`double`, 0 = no bound): the quantization gives such arcs enough edges
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_tolerance_t, feature_tolerance, feature_tolerance)
 
 #endif // CGAL_QUAD_REMESHING_PARAMETERS_H

@@ -80,6 +80,14 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`0` (the uniform `quad_edge_length`)}
     \cgalParamNEnd
+    \cgalParamNBegin{feature_tolerance}
+      \cgalParamDescription{the quad edges along a feature line (a crease or the boundary) that bends stay within
+                            this fraction of the bounding-box diagonal of the line: the quantization gives such
+                            arcs at least the edges that takes, up to about twice their target count (0: no
+                            such bound)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.002`}
+    \cgalParamNEnd
     \cgalParamNBegin{feature_angle}
       \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
       \cgalParamType{`double`}
@@ -164,10 +172,14 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   std::vector<int> counts;
   const std::vector<double> sizing = internal::quad_sizing(
     tm, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.));
-  report["quantize"] = quantize_patch_sides(internal::quantization_problem(tm, layout, polygons, length, sizing), counts,
+  Side_quantization_problem problem = internal::quantization_problem(tm, layout, polygons, length, sizing);
+  const std::size_t bent_arcs = internal::set_feature_chord_minimums(problem, tm, layout, polygons, feature,
+    choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance));
+  report["quantize"] = quantize_patch_sides(problem, counts,
     QRP::number_of_threads(threads)
       .maximum_running_time(budget.stage_limit(internal::quantize_time_share))).report();
   budget.record("quantize", report["quantize"]);
+  report["quantize"]["bent_feature_arcs"] = bent_arcs;
   if(!sizing.empty())
     report["quantize"]["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
 

@@ -168,7 +168,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
 
   \brief computes the number of quad edges of every arc of a patch layout (paper, Section 6.1).
 
-  Solves, per cluster of patches, the mixed-integer program: one integer `s >= 1` per arc; every
+  Solves, per cluster of patches, the mixed-integer program: one integer `s >= max(1, minimum)` per arc; every
   patch perimeter even and at least 4 (hard); minimise
   `w_iso * sum (s - target)^2` (exact at integers through secant cuts, within a window of at least
   3 around the target)
@@ -176,7 +176,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   `+ w_poly * sum_{3,5,6-gons} (1/n) sum_i max(0, 2 - L_i(e))` where `L_i(e) >= 2` are Tarini's
   inequalities (every separatrix at least one edge; paper Eq. 1), plus, for hexagons, a penalty when
   `e0 + e2 + e4` is odd. Arcs between clusters are first fixed to the even number nearest to their
-  target. A cluster whose solve ends with no trusted solution (node or time limit before any incumbent,
+  target (at least their minimum). A cluster whose solve ends with no trusted solution (node or time limit before any incumbent,
   solver error, no GLPK) takes its values from a solver-free fallback. The fallback works on *strips*:
   arcs that are opposite single-arc sides of 4-sided patches, chained; every strip takes the rounded
   mean of its targets (so the quads it crosses are regular), then odd patches are paired along
@@ -190,8 +190,8 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   each (this is what regularises the quads at T-junctions); a move is taken when it lowers the
   objective. Everything is deterministic. With this first incumbent a small node limit suffices: on
   the 22 development meshes the default of 100 nodes gives a lower total objective than 500 nodes did
-  from the plain rounding, in a third of the time. The result always has every `s >= 1` and every
-  perimeter even and `>= 4`.
+  from the plain rounding, in a third of the time. The result always has every free arc at least at
+  its minimum (fixed values are kept as given) and every perimeter even and `>= 4`.
 
   `+ w_align * sum_pairs (|up_p - down_q| + |down_p - up_q|) / 2`, the singularity alignment of the
   paper: a pair is a side of a 3, 5 or 6-sided patch `p` and one of another such patch `q` that face
@@ -215,7 +215,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   @param np optional named parameters among the ones listed below
 
   @pre every patch has 3 to 6 non-empty sides; arc ids are valid; every arc bounds at most two
-       patch sides; targets are in `(0, 1e6]`. Violations throw `std::invalid_argument`, as do fixed
+       patch sides; targets are in `(0, 1e6]`, minimums in `[1, 1e6]`. Violations throw `std::invalid_argument`, as do fixed
        arc values that make even perimeters impossible.
 
   \cgalNamedParamsBegin
@@ -330,7 +330,8 @@ quantize_patch_sides(const Side_quantization_problem& problem,
     for(std::size_t a = 0; a < problem.arcs.size(); ++a) {
       const auto& inc = v.arc_patches[a];
       if(v.fixed[a] == 0 && inc.size() == 2 && cluster_of[inc[0]] != cluster_of[inc[1]])
-        v.fixed[a] = (std::max)(2, 2 * static_cast<int>(std::lround(problem.arcs[a].target / 2.)));
+        v.fixed[a] = (std::max)((problem.arcs[a].minimum + 1) / 2 * 2,
+                                (std::max)(2, 2 * static_cast<int>(std::lround(problem.arcs[a].target / 2.))));
     }
   }
   // Facing sides of non-quad patches; a pair is modelled in the program of a cluster holding both.

@@ -9,6 +9,7 @@
 #include <CGAL/Quad_remeshing/Patch_layout.h>
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
 #include <CGAL/Quad_remeshing/quantize_patch_sides.h>
+#include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -255,6 +256,71 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
     pb.patches.push_back(s);
   }
   return pb;
+}
+
+// The fewest straight edges, with ends at equal arc-length steps along the polyline `p`, that stay
+// within `tolerance` of it (every vertex of `p` within `tolerance` of the edge spanning it), at most `cap`.
+template <typename Point>
+int chord_minimum(const std::vector<Point>& p, double tolerance, int cap)
+{
+  if(p.size() < 3 || cap <= 1) return 1;
+  std::vector<double> at(p.size(), 0.); // arc length at every point
+  for(std::size_t i = 1; i < p.size(); ++i)
+    at[i] = at[i - 1] + std::sqrt(CGAL::to_double(CGAL::squared_distance(p[i - 1], p[i])));
+  const double total = at.back();
+  if(!(total > 0)) return 1;
+  auto point_at = [&](double l) { // the point at arc length l
+    const std::size_t i = std::size_t(std::upper_bound(at.begin(), at.end(), l) - at.begin());
+    if(i == 0) return p.front();
+    if(i >= p.size()) return p.back();
+    const double d = at[i] - at[i - 1];
+    return d > 0 ? p[i - 1] + (p[i] - p[i - 1]) * ((l - at[i - 1]) / d) : p[i];
+  };
+  const double tol2 = tolerance * tolerance;
+  for(int n = 1; n < cap; ++n) {
+    bool fits = true;
+    for(std::size_t i = 1; i + 1 < p.size() && fits; ++i) {
+      const int k = (std::min)(n - 1, int(at[i] / total * n)); // the edge spanning point i
+      const typename CGAL::Kernel_traits<Point>::Kernel::Segment_3 chord(point_at(total * k / n), point_at(total * (k + 1) / n));
+      fits = CGAL::to_double(CGAL::squared_distance(p[i], chord)) <= tol2;
+    }
+    if(fits) return n;
+  }
+  return cap;
+}
+
+constexpr double default_feature_tolerance = 0.002; // quad_remesh()'s `feature_tolerance`
+
+// Raises the minimum edge count of every arc along a feature line (the boundary included) so that
+// its quad edges, placed at equal arc-length steps as the assembly does, follow the line within
+// `relative_tolerance` times the bounding-box diagonal: the quantization may otherwise give a bent
+// feature line so few edges that they cut its bends. Capped at 2 ceil(target) + 1 (quads there at most
+// about twice as long as wide). A tolerance <= 0 leaves every minimum at 1. Returns the number of
+// arcs whose minimum was raised.
+template <typename TriangleMesh, typename Layout, typename EdgeIsFeatureMap>
+std::size_t set_feature_chord_minimums(Side_quantization_problem& pb, const TriangleMesh& tm, const Layout& layout,
+                                const Quadrangulation_layout<TriangleMesh, Layout>& ql,
+                                EdgeIsFeatureMap edge_is_feature, double relative_tolerance)
+{
+  if(!(relative_tolerance > 0) || num_vertices(tm) == 0) return 0;
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
+  const double tolerance = relative_tolerance * bbox_diagonal(box);
+  std::size_t raised = 0;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
+  std::vector<Point> p;
+  for(std::size_t i = 0; i < ql.pieces.size() && i < pb.arcs.size(); ++i) {
+    const auto& piece = ql.pieces[i];
+    const auto& arc = layout.arcs()[piece.arc];
+    if(!get(edge_is_feature, edge(arc.halfedges[piece.first], tm))) continue;
+    p.clear();
+    p.push_back(get(CGAL::vertex_point, tm, source(arc.halfedges[piece.first], tm)));
+    for(std::size_t k = piece.first; k <= piece.last; ++k) p.push_back(get(CGAL::vertex_point, tm, target(arc.halfedges[k], tm)));
+    const int cap = 2 * static_cast<int>(std::ceil(pb.arcs[i].target)) + 1;
+    const int m = chord_minimum(p, tolerance, cap);
+    if(m > pb.arcs[i].minimum) { pb.arcs[i].minimum = m; ++raised; }
+  }
+  return raised;
 }
 
 // Arcs as vertex chains and patches as ordered, oriented arcs, for assemble_quad_mesh().

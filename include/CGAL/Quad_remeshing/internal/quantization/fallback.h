@@ -133,7 +133,7 @@ inline void fallback_assignment(const Quantization_view& v, std::vector<int>& s)
   const std::size_t outside = np;
   const Strip_graph g = make_strip_graph(v);
   std::vector<int> lo(na), hi(na);
-  for(std::size_t a = 0; a < na; ++a) arc_window(v.problem->arcs[a].target, lo[a], hi[a]);
+  for(std::size_t a = 0; a < na; ++a) arc_window(v.problem->arcs[a], lo[a], hi[a]);
   // Step 1.
   for(std::size_t a = 0; a < na; ++a) {
     if(v.fixed[a] > 0) { s[a] = v.fixed[a]; continue; }
@@ -155,7 +155,7 @@ inline void fallback_assignment(const Quantization_view& v, std::vector<int>& s)
     };
     int d = g.mean_target[r] < double(s[m[0]]) ? -1 : 1;
     if(!fits(d)) d = -d;
-    for(std::size_t a : m) s[a] = (std::max)(1, s[a] + d); // windows are at least 7 wide: d fits
+    for(std::size_t a : m) s[a] = (std::max)(v.problem->arcs[a].minimum, s[a] + d); // windows are at least 4 wide: d fits
   };
   auto strip_edges = [&](std::size_t p) -> const std::vector<std::pair<std::size_t, std::size_t> >& { return g.adjacent[p]; };
   for(std::size_t start = 0; start < np; ++start) {
@@ -183,7 +183,7 @@ inline void fallback_assignment(const Quantization_view& v, std::vector<int>& s)
   };
   auto bump = [&](std::size_t a) {
     const double t = v.problem->arcs[a].target;
-    if(s[a] > 1 && double(s[a]) > t) --s[a]; else ++s[a];
+    if(s[a] > v.problem->arcs[a].minimum && double(s[a]) > t) --s[a]; else ++s[a];
   };
   for(std::size_t start = 0; start < np; ++start) {
     if(!odd[start]) continue;

@@ -45,7 +45,7 @@ inline double improve_strip_cycles(const Quantization_view& v, std::vector<int>&
   if(w.alignment > 0)
     for(std::size_t k = 0; k < pairs.size(); ++k) { pairs_of[pairs[k].p].push_back(k); pairs_of[pairs[k].q].push_back(k); }
   std::vector<int> lo(na), hi(na);
-  for(std::size_t a = 0; a < na; ++a) arc_window(pb.arcs[a].target, lo[a], hi[a]);
+  for(std::size_t a = 0; a < na; ++a) arc_window(pb.arcs[a], lo[a], hi[a]);
   auto fits = [&](std::size_t r, int d) {
     for(std::size_t a : members[r]) if(s[a] + d < (std::max)(1, lo[a]) || s[a] + d > hi[a]) return false;
     return true;
@@ -142,7 +142,7 @@ inline double improve_locally(const Quantization_view& v, std::vector<int>& s, c
       for(std::size_t a : pb.patches[p][i]) side_of[p].emplace_back(a, i);
   // values stay in the windows of the program (arc_window), so that a result is a valid starting point
   std::vector<int> lo(na), hi(na);
-  for(std::size_t a = 0; a < na; ++a) arc_window(pb.arcs[a].target, lo[a], hi[a]);
+  for(std::size_t a = 0; a < na; ++a) arc_window(pb.arcs[a], lo[a], hi[a]);
   auto allowed = [&](std::size_t a, int x) { return x >= lo[a] && x <= hi[a]; };
   auto iso = [&](std::size_t a, int x) { const double d = x - pb.arcs[a].target; return w.isometry * d * d; };
 

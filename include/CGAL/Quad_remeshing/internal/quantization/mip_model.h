@@ -25,12 +25,16 @@ struct Cluster_result
 
 // The integer window [lo, hi] of an arc around its target. Inside it the convex squared deviation is
 // represented exactly at integers by the secants through consecutive integers; the window is wide
-// enough (at least 3 on each side) for parity and regularity moves.
-inline void arc_window(double t, int& lo, int& hi)
+// enough (at least 3 on each side) for parity and regularity moves. An arc's minimum raises the low
+// end and, if it passes the high end, moves the high end as far above the minimum.
+inline void arc_window(const Side_quantization_problem::Arc& arc, int& lo, int& hi)
 {
+  const double t = arc.target;
   const int r = (std::max)(3, static_cast<int>(std::ceil(0.5 * t)));
   lo = (std::max)(1, static_cast<int>(std::floor(t)) - r);
   hi = static_cast<int>(std::ceil(t)) + r;
+  lo = (std::max)(lo, arc.minimum);
+  hi = (std::max)(hi, lo + r);
 }
 
 // Builds and solves the program of one cluster (its patches; arcs not in the cluster are fixed in
@@ -68,7 +72,7 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
       if(v.fixed[a] == 0) var.emplace(a, nullptr);
   for(auto& kv : var) {
     const double t = pb.arcs[kv.first].target;
-    int lo, hi; arc_window(t, lo, hi);
+    int lo, hi; arc_window(pb.arcs[kv.first], lo, hi);
     kv.second = mip.create_variable(Variable::INTEGER, lo, hi);
     Variable* epi = mip.create_variable(Variable::CONTINUOUS, 0, Variable::infinity());
     const int s0 = s[kv.first];

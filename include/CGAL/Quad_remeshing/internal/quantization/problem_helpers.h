@@ -37,6 +37,9 @@ struct Side_quantization_problem
     double target = 1.;
     /// If > 0, the edge count is fixed to this value (e.g. already decided elsewhere); 0 means free.
     int fixed = 0;
+    /// The smallest edge count a free arc may take (>= 1), e.g. the number of straight edges a bent
+    /// feature line needs to be followed within a tolerance (see `internal::chord_minimum()`).
+    int minimum = 1;
   };
   /// The arcs.
   std::vector<Arc> arcs;
@@ -47,12 +50,12 @@ struct Side_quantization_problem
 namespace internal {
 
 // Plain-text form of a problem (the CLI's --dump writes it; benchmarks read it back): the number of
-// arcs, one "target fixed" line per arc (targets with 17 significant digits), the number of patches,
+// arcs, one "target fixed minimum" line per arc (targets with 17 significant digits), the number of patches,
 // then per patch its number of sides followed, per side, by its number of arcs and their ids.
 inline void write_quantization_problem(std::ostream& out, const Side_quantization_problem& pb)
 {
   out << std::setprecision(17) << pb.arcs.size() << "\n";
-  for(const auto& a : pb.arcs) out << a.target << " " << a.fixed << "\n";
+  for(const auto& a : pb.arcs) out << a.target << " " << a.fixed << " " << a.minimum << "\n";
   out << pb.patches.size() << "\n";
   for(const auto& patch : pb.patches) {
     out << patch.size();
@@ -71,7 +74,7 @@ inline Side_quantization_problem read_quantization_problem(std::istream& in)
   std::size_t n = 0;
   if(!(in >> n)) throw std::runtime_error("read_quantization_problem: no arc count");
   pb.arcs.resize(n);
-  for(auto& a : pb.arcs) if(!(in >> a.target >> a.fixed)) throw std::runtime_error("read_quantization_problem: bad arc");
+  for(auto& a : pb.arcs) if(!(in >> a.target >> a.fixed >> a.minimum)) throw std::runtime_error("read_quantization_problem: bad arc");
   if(!(in >> n)) throw std::runtime_error("read_quantization_problem: no patch count");
   pb.patches.resize(n);
   for(auto& patch : pb.patches) {
@@ -112,6 +115,8 @@ inline Quantization_view make_view(const Side_quantization_problem& pb)
       throw std::invalid_argument("quantize_patch_sides: arc " + std::to_string(a) + " has a target that is not in (0, 1e6]");
     if(pb.arcs[a].fixed < 0)
       throw std::invalid_argument("quantize_patch_sides: arc " + std::to_string(a) + " has a negative fixed value");
+    if(pb.arcs[a].minimum < 1 || pb.arcs[a].minimum > 1000000)
+      throw std::invalid_argument("quantize_patch_sides: arc " + std::to_string(a) + " has a minimum that is not in [1, 1e6]");
     v.fixed[a] = pb.arcs[a].fixed;
   }
   for(std::size_t p = 0; p < pb.patches.size(); ++p) {
