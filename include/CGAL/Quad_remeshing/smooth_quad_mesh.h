@@ -52,8 +52,8 @@ struct Quad_smoothing_statistics
   std::size_t inverted_before = 0;    ///< quads with a scaled Jacobian <= 0 before smoothing
   std::size_t inverted_after = 0;     ///< quads with a scaled Jacobian <= 0 after smoothing
   std::size_t untangling_moves = 0;   ///< vertex moves made to untangle quads with a scaled Jacobian <= 0
-  std::size_t refined_chords = 0;     ///< chords split in two because a quad on them stayed inverted
-  std::size_t inset_quads = 0;        ///< inverted quads replaced by an inner quad and four around it
+  std::size_t refined_chords = 0;     ///< chords split in two because a quad on them stayed inverted or flat (scaled Jacobian <= 1e-3)
+  std::size_t inset_quads = 0;        ///< inverted or flat quads replaced by an inner quad and four around it
   std::size_t refinement_quads = 0;   ///< quads added by the chord splits and the insets
   double min_scaled_jacobian_before = 0.;  ///< over all quads, before smoothing
   double min_scaled_jacobian_after = 0.;   ///< over all quads, after smoothing
@@ -251,11 +251,13 @@ void collect_garbage_of(Mesh&) {}
   not add a quad with a scaled Jacobian <= 0 or a poor quad.
 
   A quad that is still inverted after all that (folded over a bend of the surface smaller than itself,
-  or with a corner at a held vertex) gets its two chords split: the strips of quads that cross it are
+  or with a corner at a held vertex), or that has a scaled Jacobian <= 1e-3 (a corner within about
+  0.06 degrees of flat, e.g. at a held border vertex of valence 2: a triangle in all but name), gets
+  its two chords split: the strips of quads that cross it are
   cut in two along their length (every edge they cross gets its midpoint, put onto the surface or onto
   the feature line of a constrained edge; their quads are cut in two, in four where they cross), which
   keeps the mesh pure-quad and conforming and changes no vertex's valence. The untangling then runs
-  around the split, and the split is kept only if fewer quads are inverted than before; otherwise it is
+  around the split, and the split is kept only if fewer quads are inverted or flat than before; otherwise it is
   undone, and each chord alone is tried; chords that cross more than `max(128, #quads / 5)` edges in
   all are not split (on organic meshes one can wind over most of the surface: on elephant, 6572
   edges). A quad still inverted then is inset: it becomes an inner quad and four quads around it, so
@@ -762,10 +764,14 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   typedef typename QGT::edge_descriptor q_edge;
   const std::size_t n_faces = std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end()));
   const std::size_t max_split_edges = (std::max<std::size_t>)(128, n_faces / 5);
+  // the quads this step mends: inverted, or with a corner within about 0.06 degrees of flat (a
+  // scaled Jacobian of 1e-10 is a triangle in all but name, and no vertex move opens a flat corner
+  // at a held vertex)
+  const double mended_sj = 1e-3;
   auto count_inverted = [&]() {
     std::size_t n = 0;
     for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= 0.) ++n;
+      if(quad_sj(f) <= mended_sj) ++n;
     return n;
   };
   auto is_quad = [&](q_face f) { return CGAL::halfedges_around_face(halfedge(f, qmesh), qmesh).size() == 4; };
@@ -976,7 +982,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     // later change and its undoing, while a face index may not
     std::vector<q_halfedge> inverted;
     for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= 0.) inverted.push_back(halfedge(f, qmesh));
+      if(quad_sj(f) <= mended_sj) inverted.push_back(halfedge(f, qmesh));
     if(inverted.empty()) break;
     // every try counts the inverted quads over the whole mesh: a bounded number of tries keeps a mesh
     // with very many inverted quads from taking quadratic time, and the time limit is respected
@@ -987,7 +993,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       if(time_limit > 0. && timer.time() >= time_limit) { stats.stopped_early = true; break; }
       for(int which : {3, 1, 2})
       {
-        if(quad_sj(face(fh, qmesh)) > 0.) break; // mended by an earlier change
+        if(quad_sj(face(fh, qmesh)) > mended_sj) break; // mended by an earlier change
         std::vector<q_edge> chord;
         if(!chords_through(face(fh, qmesh), which, chord) || chord.empty()) continue;
         if(try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
@@ -999,7 +1005,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
           changed = true;
         }
       }
-      if(quad_sj(face(fh, qmesh)) <= 0. &&
+      if(quad_sj(face(fh, qmesh)) <= mended_sj &&
          try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
            return inset_quad(face(fh, qmesh), ops, added);
          }))
