@@ -243,4 +243,22 @@ BOOST_AUTO_TEST_CASE(feature_tolerance_keeps_xyz_cube_letters)
   BOOST_TEST(bounded.hausdorff_max < 0.005);
 }
 
+// angle_block has a crack: a boundary loop of four edges whose two middle vertices share a position.
+// Its two sides are arcs with the same ends; given one edge each they became one edge (the crack zipped,
+// one boundary loop and the Euler characteristic lost). The output keeps the repaired input's topology.
+BOOST_AUTO_TEST_CASE(angle_block_crack_stays_open)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("angle_block.off"), t);
+  const QR::Quad_mesh_quality input = QR::quad_mesh_quality(t);
+  QR::quad_remesh(t, q);
+  const QR::Quad_mesh_quality output = QR::quad_mesh_quality(q);
+  BOOST_TEST(output.valid);
+  BOOST_TEST(output.pure_quad);
+  BOOST_TEST(input.boundary_loops == 4u);
+  BOOST_TEST(output.boundary_loops == input.boundary_loops);
+  BOOST_TEST(output.components == input.components);
+  BOOST_TEST(output.euler_characteristic == input.euler_characteristic);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

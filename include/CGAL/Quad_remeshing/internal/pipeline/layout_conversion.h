@@ -244,6 +244,21 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
     a.target = (std::max)(arc.length * (total > 0 ? part / total : 1.) / quad_edge_length, 1e-3);
     pb.arcs.push_back(a);
   }
+  // Arcs with the same two ends (the two sides of a crack, a thin hole or a sliver between two paths)
+  // would, each given one edge, become one edge twice: the assembly would zip them into one (angle_block
+  // lost a crack of the input so) or fail. All but one of them get at least two edges, and a piece that
+  // closes on itself at least three.
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> seen_ends;
+  for(std::size_t i = 0; i < ql.pieces.size(); ++i)
+  {
+    const auto& piece = ql.pieces[i];
+    const auto& arc = layout.arcs()[piece.arc];
+    std::size_t u = std::size_t(get(CGAL::vertex_index, tm, source(arc.halfedges[piece.first], tm)));
+    std::size_t w = std::size_t(get(CGAL::vertex_index, tm, target(arc.halfedges[piece.last], tm)));
+    if(u == w) { pb.arcs[i].minimum = (std::max)(pb.arcs[i].minimum, 3); continue; }
+    if(w < u) std::swap(u, w);
+    if(++seen_ends[std::make_pair(u, w)] > 1) pb.arcs[i].minimum = (std::max)(pb.arcs[i].minimum, 2);
+  }
   for(const auto& sides : ql.patch_sides)
   {
     std::vector<std::vector<std::size_t>> s;
