@@ -165,13 +165,14 @@ Timing trace_stage(Prepared& p, unsigned threads, bool verbose)
   return s;
 }
 
-// quantization_problem() (the layout's arcs and patches as sides) + quantize_patch_sides(), with or without
-// the MIP solver; returns their times
+// the pipeline's quantization problem (the layout's arcs and patches as sides, the default tolerances) +
+// quantize_patch_sides(), with or without the MIP solver; returns their times
 Timing quantize_stage(const Prepared& p, bool use_solver, unsigned threads, bool verbose, QR::Report& figures)
 {
   const Stopwatch t;
   const QR::internal::Quadrangulation_layout<Mesh, Layout> polygons(p.tm, *p.layout);
-  const auto problem = QR::internal::quantization_problem(p.tm, *p.layout, polygons, p.quad_edge_length);
+  const auto problem = QR::internal::pipeline_quantization_problem(p.tm, *p.layout, polygons, p.feature, p.quad_edge_length,
+                                                                   0., QR::internal::default_feature_tolerance).problem;
   std::vector<int> counts;
   const auto st = QR::quantize_patch_sides(problem, counts,
     QRP::combine(QRP::use_mip_solver(use_solver), QRP::number_of_threads(threads), CGAL::parameters::verbose(verbose)));

@@ -426,12 +426,10 @@ private:
     namespace QRP = QR::parameters;
     state_.polygons = std::make_unique<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>>(state_.tmesh,
                                                                                                    *state_.layout);
-    const std::vector<double> sizing =
-      QR::internal::quad_sizing(state_.tmesh, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance);
-    QR::Side_quantization_problem pb =
-      QR::internal::quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.quad_edge_length, sizing);
-    const std::size_t bent_arcs = QR::internal::set_feature_chord_minimums(pb, state_.tmesh, *state_.layout, *state_.polygons, state_.feature,
-                                             opt_.feature_tolerance);
+    const QR::internal::Pipeline_quantization_problem qp = QR::internal::pipeline_quantization_problem(
+      state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance,
+      opt_.feature_tolerance);
+    const QR::Side_quantization_problem& pb = qp.problem;
     if(!opt_.dump_dir.empty())
     {
       std::ofstream f(opt_.dump_dir + "/6_quantization_problem.txt");
@@ -445,8 +443,8 @@ private:
     budget_.record("quantize", r);
     r["sizing_tolerance"] = opt_.sizing_tolerance;
     r["feature_tolerance"] = opt_.feature_tolerance;
-    r["bent_feature_arcs"] = bent_arcs;
-    if(!sizing.empty()) r["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
+    r["bent_feature_arcs"] = qp.bent_feature_arcs;
+    if(!qp.sizing.empty()) r["smallest_local_quad_edge_length"] = *std::min_element(qp.sizing.begin(), qp.sizing.end());
     r["relaxed_patches"] = state_.polygons->relaxed_patches;
     r["added_corners"] = state_.polygons->added_corners;
     r["dropped_corners"] = state_.polygons->dropped_corners;

@@ -170,18 +170,16 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   progress("quantize");
   const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
   std::vector<int> counts;
-  const std::vector<double> sizing = internal::quad_sizing(
-    tm, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.));
-  Side_quantization_problem problem = internal::quantization_problem(tm, layout, polygons, length, sizing);
-  const std::size_t bent_arcs = internal::set_feature_chord_minimums(problem, tm, layout, polygons, feature,
+  const internal::Pipeline_quantization_problem qp = internal::pipeline_quantization_problem(
+    tm, layout, polygons, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.),
     choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance));
-  report["quantize"] = quantize_patch_sides(problem, counts,
+  report["quantize"] = quantize_patch_sides(qp.problem, counts,
     QRP::number_of_threads(threads)
       .maximum_running_time(budget.stage_limit(internal::quantize_time_share))).report();
   budget.record("quantize", report["quantize"]);
-  report["quantize"]["bent_feature_arcs"] = bent_arcs;
-  if(!sizing.empty())
-    report["quantize"]["smallest_local_quad_edge_length"] = *std::min_element(sizing.begin(), sizing.end());
+  report["quantize"]["bent_feature_arcs"] = qp.bent_feature_arcs;
+  if(!qp.sizing.empty())
+    report["quantize"]["smallest_local_quad_edge_length"] = *std::min_element(qp.sizing.begin(), qp.sizing.end());
 
   progress("quadrangulate");
   const auto description = internal::layout_description(tm, layout, polygons, feature);

@@ -10,6 +10,7 @@
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
 #include <CGAL/Quad_remeshing/quantize_patch_sides.h>
 #include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -336,6 +337,29 @@ std::size_t set_feature_chord_minimums(Side_quantization_problem& pb, const Tria
     if(m > pb.arcs[i].minimum) { pb.arcs[i].minimum = m; ++raised; }
   }
   return raised;
+}
+
+// The quantization problem of a traced layout as the pipeline builds it (quad_remesh(), the command
+// line and the stage benchmark share it): the targets in the local quad edge length of quad_sizing()
+// (uniform when `sizing_tolerance` <= 0), then the minimums of the arcs along bent feature lines.
+struct Pipeline_quantization_problem
+{
+  Side_quantization_problem problem;
+  std::vector<double> sizing;       // the local quad edge length per vertex (empty: uniform)
+  std::size_t bent_feature_arcs = 0; // arcs whose minimum set_feature_chord_minimums() raised
+};
+
+template <typename TriangleMesh, typename Layout, typename EdgeIsFeatureMap>
+Pipeline_quantization_problem pipeline_quantization_problem(const TriangleMesh& tm, const Layout& layout,
+                                                            const Quadrangulation_layout<TriangleMesh, Layout>& ql,
+                                                            EdgeIsFeatureMap edge_is_feature, double quad_edge_length,
+                                                            double sizing_tolerance, double feature_tolerance)
+{
+  Pipeline_quantization_problem r;
+  r.sizing = quad_sizing(tm, edge_is_feature, quad_edge_length, sizing_tolerance);
+  r.problem = quantization_problem(tm, layout, ql, quad_edge_length, r.sizing);
+  r.bent_feature_arcs = set_feature_chord_minimums(r.problem, tm, layout, ql, edge_is_feature, feature_tolerance);
+  return r;
 }
 
 // Arcs as vertex chains and patches as ordered, oriented arcs, for assemble_quad_mesh().
