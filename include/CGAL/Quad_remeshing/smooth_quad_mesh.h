@@ -253,7 +253,7 @@ void collect_garbage_of(Mesh&) {}
   A quad that is still inverted after all that (folded over a bend of the surface smaller than itself,
   or with a corner at a held vertex), or that has a scaled Jacobian <= 1e-3 (a corner within about
   0.06 degrees of flat, e.g. at a held border vertex of valence 2: a triangle in all but name), gets
-  its two chords split: the strips of quads that cross it are
+  its two chords split (only an inverted one: a flat one goes straight to the inset below): the strips of quads that cross it are
   cut in two along their length (every edge they cross gets its midpoint, put onto the surface or onto
   the feature line of a constrained edge; their quads are cut in two, in four where they cross), which
   keeps the mesh pure-quad and conforming and changes no vertex's valence. The untangling then runs
@@ -991,9 +991,13 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     for(q_halfedge fh : inverted)
     {
       if(time_limit > 0. && timer.time() >= time_limit) { stats.stopped_early = true; break; }
+      // a flat quad that is not inverted goes straight to the inset, which splits its flat corner: chord
+      // splits change no valence and do not open a flat corner at a held vertex (and each try costs an
+      // untangling)
+      const bool inverted_quad = quad_sj(face(fh, qmesh)) <= 0.;
       for(int which : {3, 1, 2})
       {
-        if(quad_sj(face(fh, qmesh)) > mended_sj) break; // mended by an earlier change
+        if(!inverted_quad || quad_sj(face(fh, qmesh)) > mended_sj) break; // flat, or mended by an earlier change
         std::vector<q_edge> chord;
         if(!chords_through(face(fh, qmesh), which, chord) || chord.empty()) continue;
         if(try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
