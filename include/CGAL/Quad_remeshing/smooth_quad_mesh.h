@@ -52,8 +52,8 @@ struct Quad_smoothing_statistics
   std::size_t inverted_before = 0;    ///< quads with a scaled Jacobian <= 0 before smoothing
   std::size_t inverted_after = 0;     ///< quads with a scaled Jacobian <= 0 after smoothing
   std::size_t untangling_moves = 0;   ///< vertex moves made to untangle quads with a scaled Jacobian <= 0
-  std::size_t refined_chords = 0;     ///< chords split in two because a quad on them stayed inverted or flat (scaled Jacobian <= 1e-3)
-  std::size_t inset_quads = 0;        ///< inverted or flat quads replaced by an inner quad and four around it
+  std::size_t refined_chords = 0;     ///< chords split in two because a quad on them stayed inverted
+  std::size_t inset_quads = 0;        ///< inverted or flat (scaled Jacobian <= 1e-3) quads replaced by an inner quad and four around it
   std::size_t refinement_quads = 0;   ///< quads added by the chord splits and the insets
   double min_scaled_jacobian_before = 0.;  ///< over all quads, before smoothing
   double min_scaled_jacobian_after = 0.;   ///< over all quads, after smoothing
@@ -260,7 +260,7 @@ void collect_garbage_of(Mesh&) {}
   around the split, and the split is kept only if fewer quads are inverted or flat than before; otherwise it is
   undone, and each chord alone is tried; chords that cross more than `max(128, #quads / 5)` edges in
   all are not split (on organic meshes one can wind over most of the surface: on elephant, 6572
-  edges). A quad still inverted then is inset: it becomes an inner quad and four quads around it, so
+  edges). A quad still inverted or flat then is inset: it becomes an inner quad and four quads around it, so
   that each of its corners gets an edge into it (which splits a corner at a held vertex that no move
   can mend), kept on the same condition. These are the only changes `smooth_quad_mesh()` makes to the
   connectivity (a `Surface_mesh`'s removed elements are then collected). At most 64 quads are tried
