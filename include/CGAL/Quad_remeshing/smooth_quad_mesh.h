@@ -768,7 +768,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // scaled Jacobian of 1e-10 is a triangle in all but name, and no vertex move opens a flat corner
   // at a held vertex)
   const double mended_sj = 1e-3;
-  auto count_inverted = [&]() {
+  auto count_quads_to_mend = [&]() {
     std::size_t n = 0;
     for(q_face f : faces(qmesh))
       if(quad_sj(f) <= mended_sj) ++n;
@@ -947,7 +947,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // added vertices); the untangling runs around it, and it stays if fewer quads are then inverted
   bool changed_connectivity = false;
   auto try_change = [&](q_halfedge fh, auto change) {
-    const std::size_t before = count_inverted();
+    const std::size_t before = count_quads_to_mend();
     std::vector<std::pair<q_vertex, Point_3>> positions;
     for(q_vertex v : vertices(qmesh)) positions.emplace_back(v, get(qvpm, v));
     std::vector<Undo_entry> ops;
@@ -966,7 +966,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     near.erase(std::unique(near.begin(), near.end()), near.end());
     untangle(20, &near);
     if(relax_tangled_regions(&near)) untangle(20, &near);
-    if(count_inverted() < before)
+    if(count_quads_to_mend() < before)
     {
       stats.refinement_quads += std::size_t(std::distance(faces(qmesh).begin(), faces(qmesh).end())) - faces_before;
       return true;
@@ -994,21 +994,21 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       // a flat quad that is not inverted goes straight to the inset, which splits its flat corner: chord
       // splits change no valence and do not open a flat corner at a held vertex (and each try costs an
       // untangling)
-      const bool inverted_quad = quad_sj(face(fh, qmesh)) <= 0.;
-      for(int which : {3, 1, 2})
-      {
-        if(!inverted_quad || quad_sj(face(fh, qmesh)) > mended_sj) break; // flat, or mended by an earlier change
-        std::vector<q_edge> chord;
-        if(!chords_through(face(fh, qmesh), which, chord) || chord.empty()) continue;
-        if(try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
-             split_chords(chord, ops, added);
-             return true;
-           }))
+      if(quad_sj(face(fh, qmesh)) <= 0.)
+        for(int which : {3, 1, 2})
         {
-          ++stats.refined_chords;
-          changed = true;
+          if(quad_sj(face(fh, qmesh)) > mended_sj) break; // mended by an earlier change
+          std::vector<q_edge> chord;
+          if(!chords_through(face(fh, qmesh), which, chord) || chord.empty()) continue;
+          if(try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
+               split_chords(chord, ops, added);
+               return true;
+             }))
+          {
+            ++stats.refined_chords;
+            changed = true;
+          }
         }
-      }
       if(quad_sj(face(fh, qmesh)) <= mended_sj &&
          try_change(fh, [&](std::vector<Undo_entry>& ops, std::vector<q_vertex>& added) {
            return inset_quad(face(fh, qmesh), ops, added);

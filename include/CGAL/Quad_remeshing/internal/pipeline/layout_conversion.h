@@ -211,6 +211,17 @@ struct Quadrangulation_layout
   }
 };
 
+// The vertices of a piece of a layout arc, from its first halfedge's source to its last one's target.
+template <typename TriangleMesh, typename Layout>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+piece_vertices(const TriangleMesh& tm, const Layout& layout, const typename Quadrangulation_layout<TriangleMesh, Layout>::Piece& piece)
+{
+  const auto& arc = layout.arcs()[piece.arc];
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> chain{source(arc.halfedges[piece.first], tm)};
+  for(std::size_t k = piece.first; k <= piece.last; ++k) chain.push_back(target(arc.halfedges[k], tm));
+  return chain;
+}
+
 // The arcs' targets are their field-measured lengths in quad edges (a piece of an arc gets the share
 // of its arc's field length given by its share of the arc's Euclidean length). With a local quad edge
 // length per vertex (`sizing`, by vertex index; empty: `quad_edge_length` everywhere), each edge of a
@@ -252,10 +263,9 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> seen_ends;
   for(std::size_t i = 0; i < ql.pieces.size(); ++i)
   {
-    const auto& piece = ql.pieces[i];
-    const auto& arc = layout.arcs()[piece.arc];
-    std::size_t u = std::size_t(get(CGAL::vertex_index, tm, source(arc.halfedges[piece.first], tm)));
-    std::size_t w = std::size_t(get(CGAL::vertex_index, tm, target(arc.halfedges[piece.last], tm)));
+    const auto chain = piece_vertices(tm, layout, ql.pieces[i]);
+    std::size_t u = std::size_t(get(CGAL::vertex_index, tm, chain.front()));
+    std::size_t w = std::size_t(get(CGAL::vertex_index, tm, chain.back()));
     if(u == w) { pb.arcs[i].minimum = (std::max)(pb.arcs[i].minimum, 3); continue; }
     if(w < u) std::swap(u, w);
     if(++seen_ends[std::make_pair(u, w)] > 1) pb.arcs[i].minimum = (std::max)(pb.arcs[i].minimum, 2);
@@ -319,9 +329,7 @@ std::size_t set_feature_chord_minimums(Side_quantization_problem& pb, const Tria
                                 EdgeIsFeatureMap edge_is_feature, double relative_tolerance)
 {
   if(!(relative_tolerance > 0) || num_vertices(tm) == 0) return 0;
-  CGAL::Bbox_3 box;
-  for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
-  const double tolerance = relative_tolerance * bbox_diagonal(box);
+  const double tolerance = relative_tolerance * mesh_bbox_diagonal(tm);
   std::size_t raised = 0;
   typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
   std::vector<Point> p;
@@ -330,8 +338,7 @@ std::size_t set_feature_chord_minimums(Side_quantization_problem& pb, const Tria
     const auto& arc = layout.arcs()[piece.arc];
     if(!get(edge_is_feature, edge(arc.halfedges[piece.first], tm))) continue;
     p.clear();
-    p.push_back(get(CGAL::vertex_point, tm, source(arc.halfedges[piece.first], tm)));
-    for(std::size_t k = piece.first; k <= piece.last; ++k) p.push_back(get(CGAL::vertex_point, tm, target(arc.halfedges[k], tm)));
+    for(auto v : piece_vertices(tm, layout, piece)) p.push_back(get(CGAL::vertex_point, tm, v));
     const int cap = 2 * static_cast<int>(std::ceil(pb.arcs[i].target)) + 1;
     const int m = chord_minimum(p, tolerance, cap);
     if(m > pb.arcs[i].minimum) { pb.arcs[i].minimum = m; ++raised; }
@@ -374,8 +381,7 @@ Patch_layout_description<TriangleMesh> layout_description(const TriangleMesh& tm
   {
     const auto& arc = layout.arcs()[piece.arc];
     typename Description::Arc a;
-    a.vertices.push_back(source(arc.halfedges[piece.first], tm));
-    for(std::size_t k = piece.first; k <= piece.last; ++k) a.vertices.push_back(target(arc.halfedges[k], tm));
+    a.vertices = piece_vertices(tm, layout, piece);
     a.on_feature = get(edge_is_feature, edge(arc.halfedges[piece.first], tm));
     d.arcs.push_back(a);
   }

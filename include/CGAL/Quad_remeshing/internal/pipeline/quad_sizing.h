@@ -141,9 +141,7 @@ template <typename TriangleMesh, typename EdgeIsFeature>
 std::vector<double> quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature, double L, double relative_tolerance)
 {
   if(!(relative_tolerance > 0.) || num_vertices(tm) == 0) return {};
-  CGAL::Bbox_3 box;
-  for(auto v : vertices(tm)) box += get(CGAL::vertex_point, tm, v).bbox();
-  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * bbox_diagonal(box));
+  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * mesh_bbox_diagonal(tm));
 }
 
 } // namespace internal
