@@ -167,7 +167,9 @@ BOOST_AUTO_TEST_CASE(chair_with_slit_patches)
   BOOST_TEST_MESSAGE("chair: " << quality.faces << " quads, SJ min " << quality.min_scaled_jacobian << " Hausdorff "
                      << f.hausdorff_max << " coverage " << f.feature_coverage);
   BOOST_TEST(f.feature_coverage >= 0.99);
-  BOOST_TEST(f.hausdorff_max <= 0.02);
+  // the smoothing projected free vertices onto the closest point of the surface, which across these thin
+  // sheets could be on the other sheet (0.0086 of the diagonal); it now keeps them on their own side
+  BOOST_TEST(f.hausdorff_max <= 0.005);
 }
 
 // truck: a cap triangle next to a window (three feature edges, 0.0018 wide) became a patch of its own

@@ -225,7 +225,10 @@ void collect_garbage_of(Mesh&) {}
   Each iteration fits a square to every quad (the rotated, scaled square closest to the quad in its
   mean plane) and moves every vertex, damped, towards the average of the fitted positions of its
   corners ("tangent-space smoothing" by template fitting). Free vertices are then projected back onto
-  the triangle mesh (closest point, AABB tree); vertices on a feature line slide along it: they are
+  the triangle mesh (closest point, AABB tree), on their own side of it: a closest point on a face whose
+  normal is turned by 90 degrees or more from that of the face the vertex started on (the other sheet of
+  a thin plate, the other side of a crease) is replaced by the closest point on the nearby faces that
+  agree with it; vertices on a feature line slide along it: they are
   projected onto the feature line of the triangle mesh they started on; feature corners and
   constrained vertices do not move. A move that would add an incident quad with a scaled Jacobian
   <= 0, or lower the smallest scaled Jacobian of the incident quads below both its previous value and
@@ -459,9 +462,67 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       if(f != QGT::null_face()) add_to_score(score, f);
     return score;
   };
-  auto place = [&](q_vertex v, const Point_3& p) {
-    return get(kind, v) == 1 ? lines.project(get(line_of, v), p) : tree.closest_point(p);
+  // A free vertex goes to the closest point of the surface on its own side. On a thin plate (the two
+  // sheets of a double-sided surface, the floor and ceiling of a slot) the closest point can be on the
+  // other sheet, and across a crease on the other side of it: there the surface's normal is turned by 90
+  // degrees or more from the normal of the face the vertex was first placed on (`home_normal`). Such a
+  // projection is replaced by the closest point on the nearby faces that agree with that normal, searched
+  // in growing boxes around the position; the plain closest point only if none is found.
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor t_face;
+  auto has_home = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
+  auto home_normal = get(CGAL::dynamic_vertex_property_t<Vector_3>(), qmesh);
+  for(q_vertex v : vertices(qmesh)) put(has_home, v, 0);
+  auto triangle_of = [&](t_face f) {
+    const auto h = halfedge(f, tmesh);
+    return typename K::Triangle_3(get(tvpm, source(h, tmesh)), get(tvpm, target(h, tmesh)),
+                                  get(tvpm, target(next(h, tmesh), tmesh)));
   };
+  auto face_normal = [&](t_face f) { return triangle_of(f).supporting_plane().orthogonal_vector(); };
+  const double box_scale = 1e-3 * internal::bbox_diagonal(bb);
+  auto project_on_own_side = [&](q_vertex v, const Point_3& p) {
+    const auto closest = tree.closest_point_and_primitive(p);
+    if(!get(has_home, v)) {
+      put(home_normal, v, face_normal(closest.second));
+      put(has_home, v, 1);
+      return closest.first;
+    }
+    const Vector_3 n = get(home_normal, v);
+    if(CGAL::to_double(face_normal(closest.second) * n) > 0.) return closest.first;
+    // at a crease the closest point is often on the crease itself (an edge or a vertex of the face),
+    // shared with a face on the own side
+    for(auto th : halfedges_around_face(halfedge(closest.second, tmesh), tmesh)) {
+      const typename K::Segment_3 side(get(tvpm, source(th, tmesh)), get(tvpm, target(th, tmesh)));
+      if(!(CGAL::to_double(CGAL::squared_distance(closest.first, side)) <= same_sq)) continue;
+      for(auto tv : {source(th, tmesh), target(th, tmesh)})
+        for(t_face g : faces_around_target(halfedge(tv, tmesh), tmesh))
+          if(g != boost::graph_traits<TriangleMesh>::null_face() && CGAL::to_double(face_normal(g) * n) > 0. &&
+             CGAL::to_double(CGAL::squared_distance(closest.first, triangle_of(g))) <= same_sq)
+            return closest.first;
+    }
+    double r = 2. * std::sqrt(CGAL::to_double(CGAL::squared_distance(p, closest.first))) + box_scale;
+    std::vector<t_face> near;
+    for(int k = 0; k < 4; ++k, r *= 4.) {
+      near.clear();
+      const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+      tree.all_intersected_primitives(CGAL::Bbox_3(x - r, y - r, z - r, x + r, y + r, z + r), std::back_inserter(near));
+      bool found = false;
+      Point_3 best = closest.first;
+      double best_d = 0.;
+      for(t_face f : near) {
+        if(!(CGAL::to_double(face_normal(f) * n) > 0.)) continue;
+        const Point_3 q = K().construct_projected_point_3_object()(triangle_of(f), p);
+        const double d = CGAL::to_double(CGAL::squared_distance(p, q));
+        if(!found || d < best_d) { found = true; best = q; best_d = d; }
+      }
+      if(found && best_d <= r * r) return best; // nothing outside the box can be closer
+    }
+    return closest.first;
+  };
+  auto place = [&](q_vertex v, const Point_3& p) {
+    return get(kind, v) == 1 ? lines.project(get(line_of, v), p) : project_on_own_side(v, p);
+  };
+  for(q_vertex v : vertices(qmesh)) // the vertices lie on the surface: each is at home where it is
+    if(get(kind, v) == 0) project_on_own_side(v, get(qvpm, v));
   auto untangle_vertex = [&](q_vertex v) -> bool {
     if(get(kind, v) == 2) return false;
     const Point_3 old_p = get(qvpm, v);
@@ -840,6 +901,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       }
       else
         put(kind, m, constrained ? 2 : 0);
+      put(has_home, m, 0);
       put(qvpm, m, get(kind, m) == 2 ? mid : place(m, mid));
       ops.emplace_back(ADDED_VERTEX, opposite(hn, qmesh));
       added.push_back(m);
@@ -874,6 +936,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
         const q_vertex o = target(hc, qmesh);
         put(qecm, edge(hc, qmesh), false);
         put(kind, o, 0);
+        put(has_home, o, 0);
         put(qvpm, o, place(o, c));
         ops.emplace_back(ADDED_VERTEX, opposite(hc, qmesh));
         added.push_back(o);
@@ -900,6 +963,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       const q_vertex v = target(hn, qmesh);
       const Point_3 c = get(qvpm, target(hs[corner], qmesh));
       put(kind, v, 0);
+      put(has_home, v, 0);
       put(qvpm, v, place(v, c + 0.35 * ((CGAL::ORIGIN + centre) - c)));
       put(qecm, edge(hn, qmesh), false);
       added.push_back(v);
