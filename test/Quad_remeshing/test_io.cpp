@@ -197,6 +197,12 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
                               "cannot fit"));
   BOOST_TEST(throws_bad_input(write_text("io_fuzz5.off", "# comment\nCOFF\n# another\n99999999 1 0\n0 0 0\n"),
                               "cannot fit"));
+  // found by fuzzing: the reader allocates each face's vertex count too, here 36666666666666 (293 TB)
+  BOOST_TEST(throws_bad_input(write_text("io_fuzz_face_count.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n# c\n\n0 1 0\n"
+                                                                   "3 0 1 2\n36666666666666 0 1 2\n"),
+                              "face 1 of the OFF file claims 36666666666666"));
+  BOOST_TEST(throws_bad_input(write_text("io_negative_face_count.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n"),
+                              "face 0"));
   {
     // binary OFF: big-endian counts
     std::string bin = "OFF BINARY\n";

@@ -289,6 +289,31 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
   if(nv > file_size || nf > file_size || 6 * nv + 2 * nf > file_size)
     return "the OFF header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces cannot fit in a file of " + std::to_string(file_size) + " bytes";
+  // The reader allocates each face's vertex count before reading its indices too (a 2580-byte file with
+  // a face of 36666666666666 vertices, found by fuzzing). A face of k vertices takes at least 2k bytes:
+  // the first number of every face line (after the rest of the header line and the nv vertex lines,
+  // blank and '#' lines skipped) must be at most half the file size.
+  std::string line;
+  std::getline(in, line);
+  auto next_line = [&]() {
+    while(std::getline(in, line)) {
+      std::size_t i = 0;
+      while(i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      if(i < line.size() && line[i] != '#') { line.erase(0, i); return true; }
+    }
+    return false;
+  };
+  for(long long i = 0; i < nv; ++i)
+    if(!next_line()) return std::string();
+  for(long long i = 0; i < nf; ++i) {
+    if(!next_line()) return std::string();
+    long long k = 0;
+    const std::string first = line.substr(0, line.find_first_of(" \t\r"));
+    if(!count(first, k)) return std::string();
+    if(k < 0 || 2 * k > file_size)
+      return "face " + std::to_string(i) + " of the OFF file claims " + first.substr(0, 20) +
+             " vertices, more than a file of " + std::to_string(file_size) + " bytes can hold";
+  }
   return std::string();
 }
 
