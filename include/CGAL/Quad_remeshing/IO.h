@@ -198,11 +198,11 @@ inline std::string check_ply_header(const std::string& fname)
 // comments, a keyword ending in OFF (prefixes ST, C, N, 4, n), then either the counts or BINARY and
 // big-endian 32-bit counts (a dimension first for the n prefix). Returns an empty string if the
 // counts are possible (or the header is not one CGAL would accept, which its reader then reports),
-// else what is wrong. When the keyword has the colour prefix C (see off_content_without_colours()),
-// `*colour_prefix_at` is set to that C's offset in the file, else to -1.
-inline std::string check_off_header(const std::string& fname, long long* colour_prefix_at = nullptr)
+// else what is wrong. `*unused_prefix_at` gets the offsets in the file of the keyword's colour prefix C
+// and, in an ASCII file, of its texture prefix ST, in increasing order (see off_content_without_prefixes()).
+inline std::string check_off_header(const std::string& fname, std::vector<long long>* unused_prefix_at = nullptr)
 {
-  if(colour_prefix_at) *colour_prefix_at = -1;
+  if(unused_prefix_at) unused_prefix_at->clear();
   std::ifstream in(fname, std::ios::binary);
   in.seekg(0, std::ios::end);
   const long long file_size = static_cast<long long>(in.tellg());
@@ -246,8 +246,8 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
     while(q < keyword.size() && std::isalnum(static_cast<unsigned char>(keyword[q]))) ++q;
     const std::size_t off = keyword.substr(0, q).find("OFF");
     const std::size_t colour = off == std::string::npos ? off : keyword.substr(0, off).find('C');
-    if(colour_prefix_at && colour != std::string::npos && keyword_at >= 0)
-      *colour_prefix_at = keyword_at + static_cast<long long>(colour);
+    if(unused_prefix_at && colour != std::string::npos && keyword_at >= 0)
+      unused_prefix_at->push_back(keyword_at + static_cast<long long>(colour));
   }
   const bool dimensional = keyword.find('n') != std::string::npos;
   long long nv = 0, nf = 0;
@@ -272,14 +272,40 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
                                     (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]));
       return true;
     };
-    long long dim = 0;
-    if((dimensional && !read32(dim)) || !read32(nv) || !read32(nf)) return std::string();
+    long long dim = 0, ne = 0;
+    if((dimensional && !read32(dim)) || !read32(nv) || !read32(nf) || !read32(ne)) return std::string();
     if(nv < 0 || nf < 0) return "the OFF header has a negative count";
     if(12 * nv + 4 * nf > file_size)
       return "the OFF header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
              " faces cannot fit in a file of " + std::to_string(file_size) + " bytes";
+    // As in the ASCII case, every face's vertex count is allocated before its indices are read (a 67-byte
+    // file claiming 2^31 vertices in a face made the reader take 16 GiB). A binary vertex is big-endian
+    // float32s: the point, the normal with the N prefix, the texture coordinates with ST (one more each
+    // with the homogeneous prefix 4; the reader takes no colour there); a face is its int32 count and
+    // that many int32 indices.
+    std::size_t j = 0;
+    const bool textures = keyword.compare(0, 2, "ST") == 0;
+    if(textures) j += 2;
+    if(j < keyword.size() && keyword[j] == 'C') ++j;
+    const bool normals = j < keyword.size() && keyword[j] == 'N';
+    if(normals) ++j;
+    const long long h = (j < keyword.size() && keyword[j] == '4') ? 1 : 0;
+    const long long vertex_bytes = 4 * ((3 + h) + (normals ? 3 + h : 0) + (textures ? 2 + h : 0));
+    long long at = static_cast<long long>(in.tellg()) + nv * vertex_bytes;
+    for(long long i = 0; i < nf; ++i) {
+      long long k = 0;
+      if(at + 4 > file_size || !in.seekg(at) || !read32(k)) return std::string(); // the reader fails there
+      if(k < 0 || 4 * k > file_size)
+        return "face " + std::to_string(i) + " of the binary OFF file claims " + std::to_string(k) +
+               " vertices, more than a file of " + std::to_string(file_size) + " bytes can hold";
+      at += 4 + 4 * k;
+    }
     return std::string();
   }
+  // CGAL 5.5's ASCII scanner reads the texture coordinates of the prefix ST past the numbers of a vertex
+  // line that has none (a read out of bounds, found by fuzzing); they are not used either
+  if(unused_prefix_at && keyword_at >= 0 && keyword.compare(0, 2, "ST") == 0)
+    unused_prefix_at->insert(unused_prefix_at->begin(), {keyword_at, keyword_at + 1});
   in.clear();
   in.seekg(word_start);
   if(!next_token(tok)) return std::string();
@@ -318,14 +344,16 @@ inline std::string check_off_header(const std::string& fname, long long* colour_
 }
 
 // CGAL 5.5's OFF scanner reads a vertex's colour past the numbers of its line when the keyword has the
-// colour prefix C and a vertex line has no colour (a heap overflow, found by fuzzing). Colours are not
-// used here: the file's content without the C at `colour_prefix_at` (found by check_off_header()).
-inline std::string off_content_without_colours(const std::string& fname, long long colour_prefix_at)
+// colour prefix C and a vertex line has no colour (a heap overflow, found by fuzzing), and in ASCII files
+// the texture coordinates of the prefix ST likewise. Neither is used here: the file's content without
+// the prefix characters at the offsets `unused_prefix_at` (in increasing order, from check_off_header()).
+inline std::string off_content_without_prefixes(const std::string& fname, const std::vector<long long>& unused_prefix_at)
 {
   std::ifstream in(fname, std::ios::binary);
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if(colour_prefix_at >= 0 && static_cast<std::size_t>(colour_prefix_at) < content.size())
-    content.erase(static_cast<std::size_t>(colour_prefix_at), 1);
+  for(auto it = unused_prefix_at.rbegin(); it != unused_prefix_at.rend(); ++it)
+    if(*it >= 0 && static_cast<std::size_t>(*it) < content.size())
+      content.erase(static_cast<std::size_t>(*it), 1);
   return content;
 }
 
@@ -409,11 +437,11 @@ Repair_statistics read_and_repair(const std::string& fname,
     if(probe.peek() == std::ifstream::traits_type::eof()) throw Bad_input("'" + fname + "': the file is empty");
   }
 
-  long long colour_prefix_at = -1; // an OFF keyword's colour prefix, read without it
+  std::vector<long long> unused_prefix_at; // an OFF keyword's colour and texture prefixes, read without them
   if(ext == "ply" || ext == "off")
   {
     const std::string problem = ext == "ply" ? internal::check_ply_header(fname)
-                                             : internal::check_off_header(fname, &colour_prefix_at);
+                                             : internal::check_off_header(fname, &unused_prefix_at);
     if(!problem.empty()) throw Bad_input("'" + fname + "': " + problem);
   }
 
@@ -421,9 +449,9 @@ Repair_statistics read_and_repair(const std::string& fname,
   std::vector<Polygon> polygons;
   bool ok = false;
   try {
-    if(ext == "off" && colour_prefix_at >= 0)
+    if(ext == "off" && !unused_prefix_at.empty())
     {
-      std::istringstream is(internal::off_content_without_colours(fname, colour_prefix_at));
+      std::istringstream is(internal::off_content_without_prefixes(fname, unused_prefix_at));
       ok = CGAL::IO::read_OFF(is, points, polygons, CGAL::parameters::verbose(false));
     }
     else
