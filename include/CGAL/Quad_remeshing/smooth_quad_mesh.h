@@ -477,7 +477,10 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return typename K::Triangle_3(get(tvpm, source(h, tmesh)), get(tvpm, target(h, tmesh)),
                                   get(tvpm, target(next(h, tmesh), tmesh)));
   };
-  auto face_normal = [&](t_face f) { return triangle_of(f).supporting_plane().orthogonal_vector(); };
+  auto face_normal = [&](t_face f) {
+    const auto h = halfedge(f, tmesh);
+    return CGAL::normal(get(tvpm, source(h, tmesh)), get(tvpm, target(h, tmesh)), get(tvpm, target(next(h, tmesh), tmesh)));
+  };
   const double box_scale = 1e-3 * internal::bbox_diagonal(bb);
   auto project_on_own_side = [&](q_vertex v, const Point_3& p) {
     const auto closest = tree.closest_point_and_primitive(p);
@@ -501,9 +504,9 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     double r = 2. * std::sqrt(CGAL::to_double(CGAL::squared_distance(p, closest.first))) + box_scale;
     std::vector<t_face> near;
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     for(int k = 0; k < 4; ++k, r *= 4.) {
       near.clear();
-      const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
       tree.all_intersected_primitives(CGAL::Bbox_3(x - r, y - r, z - r, x + r, y + r, z + r), std::back_inserter(near));
       bool found = false;
       Point_3 best = closest.first;
