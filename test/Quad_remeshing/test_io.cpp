@@ -203,6 +203,10 @@ BOOST_AUTO_TEST_CASE(binary_off_reads_and_its_face_counts_are_checked)
                               "face 0 of the binary OFF file claims"));
   BOOST_TEST(throws_bad_input(write_text("io_binary_negative_face.off", binary_tetrahedron(false, 0xfffffffdu)),
                               "face 0 of the binary OFF file claims -3"));
+  // found by fuzzing: the header parser ends the keyword at any character that is not a letter or a digit
+  // and consumes it, so NOFF"BINARY is binary and "cte" 1.7 billion vertices
+  BOOST_TEST(throws_bad_input(write_text("io_binary_after_quote.off", std::string("NOFF\"BINARY\ncte\0\0\0\0\4\0\0\0\0", 24)),
+                              "cannot fit"));
 }
 
 BOOST_AUTO_TEST_CASE(textured_off_reads_without_its_texture_coordinates)

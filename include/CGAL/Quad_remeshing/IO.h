@@ -207,15 +207,14 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
   in.seekg(0, std::ios::end);
   const long long file_size = static_cast<long long>(in.tellg());
   in.seekg(0, std::ios::beg);
-  // the next token after spaces and '#' comments; `start`, if given, gets its offset in the file
-  auto next_token = [&](std::string& tok, long long* start = nullptr) {
+  // the next token after spaces and '#' comments
+  auto next_token = [&](std::string& tok) {
     tok.clear();
     char c;
     while(in.get(c)) {
       if(c == '#') { std::string rest; std::getline(in, rest); continue; }
       if(!std::isspace(static_cast<unsigned char>(c)))
       {
-        if(start) *start = static_cast<long long>(in.tellg()) - 1;
         tok.push_back(c);
         break;
       }
@@ -236,12 +235,25 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
     return true;
   };
   std::string keyword, tok;
-  // CGAL's reader accepts more than the documented keywords (e.g. "\0OFF\xc7", found by fuzzing): any first
-  // token holding "OFF" is checked
+  // The keyword as CGAL's header parser reads it: the first character that is not a space (after '#'
+  // comment lines), whatever it is, then letters and digits; the character that ends them is consumed
+  // ("NOFF\"BINARY" is NOFF then BINARY, found by fuzzing). The parser accepts more than the documented
+  // keywords (e.g. "\0OFF\xc7", found by fuzzing): any keyword holding "OFF" is checked.
   long long keyword_at = -1;
-  if(!next_token(keyword, &keyword_at) || keyword.find("OFF") == std::string::npos) return std::string();
   {
-    // CGAL takes the keyword's letters and digits: a C before its OFF is the colour prefix
+    char k = 0;
+    while(in.get(k)) {
+      if(k == '#') { std::string rest; std::getline(in, rest); continue; }
+      if(!std::isspace(static_cast<unsigned char>(k))) break;
+    }
+    if(!in) return std::string();
+    keyword_at = static_cast<long long>(in.tellg()) - 1;
+    keyword.push_back(k);
+    while(keyword.size() < 41 && in.get(k) && std::isalnum(static_cast<unsigned char>(k))) keyword.push_back(k);
+  }
+  if(keyword.find("OFF") == std::string::npos) return std::string();
+  {
+    // a C before the keyword's OFF is the colour prefix
     std::size_t q = 0;
     while(q < keyword.size() && std::isalnum(static_cast<unsigned char>(keyword[q]))) ++q;
     const std::size_t off = keyword.substr(0, q).find("OFF");
