@@ -9,6 +9,10 @@
 //     --resume            skip meshes whose report already exists in DIR
 //     --manifest FILE     one mesh path per line ('#' starts a comment)
 //     --html              also write each mesh's HTML report (quad_remesh --html DIR/<name>.html)
+//     --target-seconds S  count and list the meshes that took S seconds or more (issue #10: 30)
+//     --target-kb-per-triangle K
+//                         count and list the meshes whose peak memory reached K KiB per input triangle
+//                         or more (issue #10: 2)
 //     -- ARGS...          passed on to quad_remesh (e.g. -- --until remesh --faces 2000)
 // Results: DIR/results.csv, DIR/results.jsonl (appended), DIR/summary.json, DIR/summary.html (a page
 // with one row per mesh of this run, linking to its report, log and output), DIR/summary.md (the same
@@ -52,6 +56,7 @@ struct Options
 {
   std::string exe, out = "batch_out", manifest;
   double time_limit = 600.;
+  double target_seconds = 0., target_kb_per_triangle = 0.; // 0: no target
   unsigned shard = 0, shards = 1;
   bool resume = false, html = false;
   std::vector<std::string> meshes, extra;
@@ -323,6 +328,8 @@ Options parse(int argc, char** argv)
     else if(a == "--manifest") o.manifest = value();
     else if(a == "--resume") o.resume = true;
     else if(a == "--html") o.html = true;
+    else if(a == "--target-seconds") o.target_seconds = std::stod(value());
+    else if(a == "--target-kb-per-triangle") o.target_kb_per_triangle = std::stod(value());
     else if(a == "--shard")
     {
       const std::string s = value();
@@ -360,7 +367,8 @@ int main(int argc, char** argv)
   } catch(const std::exception& e) {
     if(std::string(e.what()) != "help") std::cerr << "quad_remesh_batch: " << e.what() << "\n\n";
     std::cerr << "usage: quad_remesh_batch [--exe PATH] [--out DIR] [--time-limit S] [--shard I/N] [--resume]\n"
-                 "                         [--html] [--manifest FILE] MESH... [-- quad_remesh options]\n";
+                 "                         [--html] [--target-seconds S] [--target-kb-per-triangle K]\n"
+                 "                         [--manifest FILE] MESH... [-- quad_remesh options]\n";
     return 2;
   }
   if(o.exe.empty()) o.exe = default_exe(argv[0]);
@@ -425,11 +433,23 @@ int main(int argc, char** argv)
   // Summary, like the paper's Thingi10K statistics.
   QR::Report summary = QR::Report::object();
   std::size_t ok = 0;
-  std::vector<double> times, sj, irregular;
+  std::vector<double> times, sj, irregular, peak_mib, kb_per_triangle;
+  std::vector<std::string> over_time, over_memory;
   for(const Run& r : runs)
   {
     if(r.status == "ok") ++ok;
     times.push_back(r.seconds);
+    peak_mib.push_back(double(r.peak_kb) / 1024.);
+    if(o.target_seconds > 0. && r.seconds >= o.target_seconds) over_time.push_back(r.name);
+    // per triangle of the input as read (before the repair); a run refused before reading has none
+    const QR::Report* input = r.report.find("input");
+    const QR::Report* input_faces = input ? input->find("F") : nullptr;
+    if(input_faces && input_faces->number() > 0.)
+    {
+      kb_per_triangle.push_back(double(r.peak_kb) / input_faces->number());
+      if(o.target_kb_per_triangle > 0. && kb_per_triangle.back() >= o.target_kb_per_triangle)
+        over_memory.push_back(r.name);
+    }
     if(const QR::Report* q = quality_of(r.report))
     {
       if(const QR::Report* v = q->find("mean_scaled_jacobian")) sj.push_back(v->number());
@@ -445,6 +465,19 @@ int main(int argc, char** argv)
   summary["seconds_max"] = percentile(times, 1.0);
   summary["SJ_mean_median"] = percentile(sj, 0.5);
   summary["irregular_median"] = percentile(irregular, 0.5);
+  summary["peak_mib_median"] = percentile(peak_mib, 0.5);
+  summary["peak_mib_max"] = percentile(peak_mib, 1.0);
+  summary["kb_per_input_triangle_median"] = percentile(kb_per_triangle, 0.5);
+  summary["kb_per_input_triangle_max"] = percentile(kb_per_triangle, 1.0);
+  auto list_misses = [&](const char* key, double target, const std::vector<std::string>& names) {
+    if(!(target > 0.)) return;
+    summary[key] = names.size();
+    std::cout << key << " (" << target << "): " << names.size();
+    for(const std::string& n : names) std::cout << " " << n;
+    std::cout << "\n";
+  };
+  list_misses("over_time_target", o.target_seconds, over_time);
+  list_misses("over_memory_target", o.target_kb_per_triangle, over_memory);
   std::ofstream(o.out + "/summary.json") << summary.to_json() << "\n";
   write_summary_html(o.out + "/summary.html", o, runs, summary);
   write_summary_markdown(o.out + "/summary.md", runs, summary);
