@@ -252,16 +252,24 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
     while(keyword.size() < 41 && in.get(k) && std::isalnum(static_cast<unsigned char>(k))) keyword.push_back(k);
   }
   if(keyword.find("OFF") == std::string::npos) return std::string();
-  {
-    // a C before the keyword's OFF is the colour prefix
-    std::size_t q = 0;
-    while(q < keyword.size() && std::isalnum(static_cast<unsigned char>(keyword[q]))) ++q;
-    const std::size_t off = keyword.substr(0, q).find("OFF");
-    const std::size_t colour = off == std::string::npos ? off : keyword.substr(0, off).find('C');
-    if(unused_prefix_at && colour != std::string::npos && keyword_at >= 0)
-      unused_prefix_at->push_back(keyword_at + static_cast<long long>(colour));
-  }
-  const bool dimensional = keyword.find('n') != std::string::npos;
+  // The parser's prefixes, in this order: ST (texture coordinates), C (colours), N (normals), 4 (homogeneous
+  // coordinates), n (a dimension); it accepts the keyword only if exactly OFF follows them. Attributes are
+  // left out of the file (see off_content_without_prefixes()) only then: stripping the first ST of
+  // "STSTOFF", which the parser refuses, would make a keyword it takes (found by fuzzing).
+  std::size_t j = 0;
+  auto take = [&](const char* prefix) {
+    const std::string p(prefix);
+    if(keyword.compare(j, p.size(), p) != 0) return false;
+    j += p.size();
+    return true;
+  };
+  const bool textures = take("ST");
+  const long long colour_at = take("C") ? keyword_at + static_cast<long long>(j) - 1 : -1;
+  const bool normals = take("N");
+  const long long homogeneous = take("4") ? 1 : 0;
+  const bool dimensional = take("n");
+  const bool parsed = keyword.compare(j, std::string::npos, "OFF") == 0;
+  if(unused_prefix_at && parsed && colour_at >= 0) unused_prefix_at->push_back(colour_at);
   long long nv = 0, nf = 0;
   // CGAL reads the word after the keyword as letters and digits only: "BINARY\x03..." is BINARY too; when
   // the character that ends the word is not a newline, the rest of that line is skipped
@@ -290,23 +298,21 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
     if(12 * nv + 4 * nf > file_size)
       return "the OFF header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
              " faces cannot fit in a file of " + std::to_string(file_size) + " bytes";
-    // As in the ASCII case, every face's vertex count is allocated before its indices are read (a 67-byte
-    // file claiming 2^31 vertices in a face made the reader take 16 GiB). A binary vertex is big-endian
+    // As in the ASCII case, every face's vertex count is allocated before its indices are read (a 135-byte
+    // file claiming 2^31 - 16 vertices in a face made the reader take 16 GiB). A binary vertex is big-endian
     // float32s: the point, the normal with the N prefix, the texture coordinates with ST (one more each
     // with the homogeneous prefix 4; the reader takes no colour there); a face is its int32 count and
     // that many int32 indices.
-    std::size_t j = 0;
-    const bool textures = keyword.compare(0, 2, "ST") == 0;
-    if(textures) j += 2;
-    if(j < keyword.size() && keyword[j] == 'C') ++j;
-    const bool normals = j < keyword.size() && keyword[j] == 'N';
-    if(normals) ++j;
-    const long long h = (j < keyword.size() && keyword[j] == '4') ? 1 : 0;
+    const long long h = homogeneous;
     const long long vertex_bytes = 4 * ((3 + h) + (normals ? 3 + h : 0) + (textures ? 2 + h : 0));
     long long at = static_cast<long long>(in.tellg()) + nv * vertex_bytes;
     for(long long i = 0; i < nf; ++i) {
       long long k = 0;
-      if(at + 4 > file_size || !in.seekg(at) || !read32(k)) return std::string(); // the reader fails there
+      // the reader does not fail on a count cut short by the end of the file: it takes the bytes it got
+      // and allocates (7.7 GB for a 122-byte file, found by fuzzing)
+      if(at + 4 > file_size)
+        return "the binary OFF file ends before the vertex count of face " + std::to_string(i);
+      if(!in.seekg(at) || !read32(k)) return std::string();
       if(k < 0 || 4 * k > file_size)
         return "face " + std::to_string(i) + " of the binary OFF file claims " + std::to_string(k) +
                " vertices, more than a file of " + std::to_string(file_size) + " bytes can hold";
@@ -316,7 +322,7 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
   }
   // CGAL 5.5's ASCII scanner reads the texture coordinates of the prefix ST past the numbers of a vertex
   // line that has none (a read out of bounds, found by fuzzing); they are not used either
-  if(unused_prefix_at && keyword_at >= 0 && keyword.compare(0, 2, "ST") == 0)
+  if(unused_prefix_at && parsed && textures)
     unused_prefix_at->insert(unused_prefix_at->begin(), {keyword_at, keyword_at + 1});
   in.clear();
   in.seekg(word_start);
