@@ -287,8 +287,7 @@ BOOST_AUTO_TEST_CASE(bad_files_are_refused_with_a_message)
   {
     // binary OFF: big-endian counts
     std::string bin = "OFF BINARY\n";
-    for(std::uint32_t x : {3u, 2000000000u, 0u})
-      for(int k = 3; k >= 0; --k) bin.push_back(char((x >> (8 * k)) & 0xff));
+    for(std::uint32_t x : {3u, 2000000000u, 0u}) append_be32(bin, x);
     BOOST_TEST(throws_bad_input(write_text("io_fuzz6.off", bin), "cannot fit"));
   }
 }

@@ -207,20 +207,22 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
   in.seekg(0, std::ios::end);
   const long long file_size = static_cast<long long>(in.tellg());
   in.seekg(0, std::ios::beg);
+  // the first character after spaces and '#' comment lines; false at the end of the file
+  auto first_after_comments = [&](char& c) {
+    while(in.get(c)) {
+      if(c == '#') { std::string rest; std::getline(in, rest); continue; }
+      if(!std::isspace(static_cast<unsigned char>(c))) return true;
+    }
+    return false;
+  };
   // the next token after spaces and '#' comments
   auto next_token = [&](std::string& tok) {
     tok.clear();
     char c;
-    while(in.get(c)) {
-      if(c == '#') { std::string rest; std::getline(in, rest); continue; }
-      if(!std::isspace(static_cast<unsigned char>(c)))
-      {
-        tok.push_back(c);
-        break;
-      }
-    }
+    if(!first_after_comments(c)) return false;
+    tok.push_back(c);
     while(in.get(c) && !std::isspace(static_cast<unsigned char>(c)) && tok.size() < 64) tok.push_back(c);
-    return !tok.empty();
+    return true;
   };
   // a count as the stream extraction of CGAL's reader takes it: an optional sign, then the leading digits
   // (it stops at the first other character, e.g. "170835621+0.7" is 170835621); false when no digit
@@ -242,11 +244,7 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
   long long keyword_at = -1;
   {
     char k = 0;
-    while(in.get(k)) {
-      if(k == '#') { std::string rest; std::getline(in, rest); continue; }
-      if(!std::isspace(static_cast<unsigned char>(k))) break;
-    }
-    if(!in) return std::string();
+    if(!first_after_comments(k)) return std::string();
     keyword_at = static_cast<long long>(in.tellg()) - 1;
     keyword.push_back(k);
     while(keyword.size() < 41 && in.get(k) && std::isalnum(static_cast<unsigned char>(k))) keyword.push_back(k);
@@ -275,11 +273,7 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
   // the character that ends the word is not a newline, the rest of that line is skipped
   std::string word;
   char c = 0;
-  while(in.get(c)) {
-    if(c == '#') { std::string rest; std::getline(in, rest); continue; }
-    if(!std::isspace(static_cast<unsigned char>(c))) break;
-  }
-  if(!in) return std::string();
+  if(!first_after_comments(c)) return std::string();
   const std::streampos word_start = in.tellg() - std::streamoff(1);
   word.push_back(c);
   while(word.size() < 64 && in.get(c) && std::isalnum(static_cast<unsigned char>(c))) word.push_back(c);
@@ -303,8 +297,8 @@ inline std::string check_off_header(const std::string& fname, std::vector<long l
     // float32s: the point, the normal with the N prefix, the texture coordinates with ST (one more each
     // with the homogeneous prefix 4; the reader takes no colour there); a face is its int32 count and
     // that many int32 indices.
-    const long long h = homogeneous;
-    const long long vertex_bytes = 4 * ((3 + h) + (normals ? 3 + h : 0) + (textures ? 2 + h : 0));
+    const long long vertex_bytes =
+        4 * ((3 + homogeneous) + (normals ? 3 + homogeneous : 0) + (textures ? 2 + homogeneous : 0));
     long long at = static_cast<long long>(in.tellg()) + nv * vertex_bytes;
     for(long long i = 0; i < nf; ++i) {
       long long k = 0;
