@@ -168,8 +168,11 @@ BOOST_AUTO_TEST_CASE(chair_with_slit_patches)
                      << f.hausdorff_max << " coverage " << f.feature_coverage);
   BOOST_TEST(f.feature_coverage >= 0.99);
   // the smoothing projected free vertices onto the closest point of the surface, which across these thin
-  // sheets could be on the other sheet (0.0086 of the diagonal); it now keeps them on their own side
-  BOOST_TEST(f.hausdorff_max <= 0.005);
+  // sheets could be on the other sheet (0.0086 of the diagonal); it now keeps them on their own side.
+  // Since the own side is within 75 degrees rather than 90 (see angle_block below; it brings elephant
+  // from 1.69% to 1.18% of the diagonal in qmeval), a valence-6 vertex on a tight bend of the sheets
+  // lands elsewhere, and the figure went from 0.0049 to 0.0070.
+  BOOST_TEST(f.hausdorff_max <= 0.0075);
 }
 
 // truck: a cap triangle next to a window (three feature edges, 0.0018 wide) became a patch of its own
@@ -261,6 +264,27 @@ BOOST_AUTO_TEST_CASE(angle_block_crack_stays_open)
   BOOST_TEST(output.boundary_loops == input.boundary_loops);
   BOOST_TEST(output.components == input.components);
   BOOST_TEST(output.euler_characteristic == input.euler_characteristic);
+}
+
+// With the adaptive pass, a free vertex of angle_block's floor was smoothed up the curved wall next to it,
+// across a 90-degree crease: the wall leans by about 2 degrees towards the floor there, so the sign of
+// the dot product with the floor's normal took it for the vertex's own side (Hausdorff 0.022 of the
+// diagonal, 0.005 before the adaptive pass). The smoothing now wants the normals within 75 degrees.
+BOOST_AUTO_TEST_CASE(angle_block_adaptive_vertices_stay_on_their_side)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("angle_block.off"), t);
+  QR::quad_remesh(t, q, QR::parameters::adaptive_remeshing(true));
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  QR::detect_evaluation_feature_edges(t, features);
+  const QR::Feature_fidelity f = QR::feature_fidelity(t, features, q);
+  BOOST_TEST_MESSAGE("angle_block adaptive: " << quality.faces << " quads, Hausdorff " << f.hausdorff_max
+                     << ", coverage " << f.feature_coverage);
+  BOOST_TEST(f.feature_coverage >= 0.99);
+  BOOST_TEST(f.hausdorff_max <= 0.008);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -88,6 +88,12 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`0.002`}
     \cgalParamNEnd
+    \cgalParamNBegin{adaptive_remeshing}
+      \cgalParamDescription{whether `remesh_for_quadrangulation()` runs its adaptive pass after the uniform one
+                            (experimental, see there)}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
     \cgalParamNBegin{feature_angle}
       \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
       \cgalParamType{`double`}
@@ -149,8 +155,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
 
   progress("remesh");
   const double length = choose_parameter(get_parameter(np, internal_np::quad_edge_length), default_quad_edge_length(tm));
+  const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
   report["remesh"] = remesh_for_quadrangulation(tm, feature,
-    QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::vertex_is_feature_corner_map(corner))).report();
+    QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::adaptive_remeshing(adaptive),
+                 QRP::feature_angle(angle), QRP::vertex_is_feature_corner_map(corner))).report();
   internal::collect_garbage(tm); // later stages index elements densely
 
   progress("field");
