@@ -432,7 +432,7 @@ int main(int argc, char** argv)
 
   // Summary, like the paper's Thingi10K statistics.
   QR::Report summary = QR::Report::object();
-  std::size_t ok = 0;
+  std::size_t ok = 0, quad_outputs = 0;
   std::vector<double> times, sj, irregular, peak_mib, kb_per_triangle;
   std::vector<std::string> over_time, over_memory;
   for(const Run& r : runs)
@@ -450,8 +450,13 @@ int main(int argc, char** argv)
       if(o.target_kb_per_triangle > 0. && kb_per_triangle.back() >= o.target_kb_per_triangle)
         over_memory.push_back(r.name);
     }
-    if(const QR::Report* q = quality_of(r.report))
+    // the quad figures of quad outputs only: a run stopped before the quad stages (--until remesh) writes
+    // triangles, whose scaled Jacobian is 0 and whose vertices are all irregular as quad vertices
+    const QR::Report* q = quality_of(r.report);
+    const QR::Report* pure_quad = q ? q->find("pure_quad") : nullptr;
+    if(pure_quad && pure_quad->boolean())
     {
+      ++quad_outputs;
       if(const QR::Report* v = q->find("mean_scaled_jacobian")) sj.push_back(v->number());
       if(const QR::Report* v = q->find("irregular_vertices")) irregular.push_back(v->number());
     }
@@ -463,8 +468,12 @@ int main(int argc, char** argv)
   summary["seconds_p90"] = percentile(times, 0.9);
   summary["seconds_p99"] = percentile(times, 0.99);
   summary["seconds_max"] = percentile(times, 1.0);
-  summary["SJ_mean_median"] = percentile(sj, 0.5);
-  summary["irregular_median"] = percentile(irregular, 0.5);
+  summary["quad_outputs"] = quad_outputs;
+  if(quad_outputs > 0)
+  {
+    summary["SJ_mean_median"] = percentile(sj, 0.5);
+    summary["irregular_median"] = percentile(irregular, 0.5);
+  }
   summary["peak_mib_median"] = percentile(peak_mib, 0.5);
   summary["peak_mib_max"] = percentile(peak_mib, 1.0);
   summary["kb_per_input_triangle_median"] = percentile(kb_per_triangle, 0.5);
