@@ -398,7 +398,8 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
                             development meshes) it brings the organic meshes much closer to the input
                             (teapot 3.2% -> 0.7% of the diagonal, face 2.0% -> 0.5%) and raises their
                             feature coverage (spot 0.82 -> 0.98), but takes the CAD meshes xyz_cube_20mm
-                            (0.3% -> 1.2%: quads across the 0.5 mm walls of its embossed letters) and
+                            (0.3% -> 1.2%: the smoothing moves free vertices of an embossed letter's top over its
+                            edge, and they land on the floor 0.5 mm below, whose normal is the top's) and
                             draco_test_nm (0.7% -> 1.3%) farther, takes 1.5 times the time, and on
                             chair_doublesided the assembly refuses the quadrangulation of one patch}
       \cgalParamType{`bool`}

@@ -485,10 +485,13 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return CGAL::normal(get(tvpm, source(h, tmesh)), get(tvpm, target(h, tmesh)), get(tvpm, target(next(h, tmesh), tmesh)));
   };
   const double box_scale = 1e-3 * internal::bbox_diagonal(bb);
+  // m * n > cos(75 degrees) |m| for the unit home normal n, squared so that the box search, which tests
+  // every face in its box, takes no square root
   auto on_own_side = [&](t_face f, q_vertex v) {
-    const double cos_75_degrees = 0.2588;
+    const double cos2_75_degrees = 0.2588 * 0.2588;
     const Vector_3 m = face_normal(f);
-    return CGAL::to_double(m * get(home_normal, v)) > cos_75_degrees * std::sqrt(CGAL::to_double(m.squared_length()));
+    const double dot = CGAL::to_double(m * get(home_normal, v));
+    return dot > 0. && dot * dot > cos2_75_degrees * CGAL::to_double(m.squared_length());
   };
   auto project_on_own_side = [&](q_vertex v, const Point_3& p) {
     const auto closest = tree.closest_point_and_primitive(p);
