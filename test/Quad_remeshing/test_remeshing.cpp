@@ -192,6 +192,56 @@ BOOST_AUTO_TEST_CASE(sliver_cad_mesh)
   BOOST_CHECK_GT(o.stats.mean_angle_after, 55.);
 }
 
+// The long, thin triangles of a CAD input (abc_00000006: 37k faces, an estimated split growth of 43) are
+// cut into ladders before the uniform pass: the surface and the feature lines stay, the pieces of the
+// long edges are at most the target length, and the split growth that isotropic_remeshing() would face
+// drops ten times, for three times the input's faces.
+BOOST_AUTO_TEST_CASE(long_edges_split_evenly)
+{
+  Mesh m = load("abc_00000006.off");
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  QR::detect_feature_edges(m, f);
+  auto held = m.add_property_map<Mesh::Vertex_index, bool>("v:held", true).first;
+  const double length = QR::default_quad_edge_length(m) / 2.;
+  const double blowup_before = QR::internal::split_blowup_estimate(m, m.points());
+  const double area_before = PMP::area(m);
+  double feature_length_before = 0.;
+  for(auto e : m.edges()) if(f[e]) feature_length_before += PMP::edge_length(m.halfedge(e), m);
+  const std::size_t faces_before = m.number_of_faces(), vertices_before = m.number_of_vertices();
+
+  Mesh whole = m;
+  const std::size_t inserted = QR::internal::split_long_edges_evenly(m, m.points(), f, held, length);
+  BOOST_REQUIRE(m.is_valid(false));
+  BOOST_REQUIRE(CGAL::is_triangle_mesh(m));
+  BOOST_CHECK_EQUAL(m.number_of_vertices(), vertices_before + inserted);
+  BOOST_CHECK_GT(inserted, faces_before / 2);
+  double feature_length_after = 0.;
+  std::size_t held_after = 0;
+  for(auto e : m.edges())
+    if(f[e])
+    {
+      feature_length_after += PMP::edge_length(m.halfedge(e), m);
+      BOOST_CHECK_LE(PMP::edge_length(m.halfedge(e), m), 4. / 3. * length);
+    }
+  for(auto v : m.vertices()) held_after += held[v];
+  BOOST_CHECK_EQUAL(held_after, vertices_before); // the new vertices are not held
+  BOOST_CHECK_CLOSE(PMP::area(m), area_before, 1e-6);
+  BOOST_CHECK_CLOSE(feature_length_after, feature_length_before, 1e-6);
+  const double blowup_after = QR::internal::split_blowup_estimate(m, m.points());
+  BOOST_TEST_MESSAGE("  split estimate " << blowup_before << " -> " << blowup_after << ", faces " << faces_before
+                     << " -> " << m.number_of_faces());
+  BOOST_CHECK_GT(blowup_before, 40.);
+  BOOST_CHECK_LT(blowup_after, 5.); // 4.0 (the other development meshes: 1 to 16)
+  BOOST_CHECK_LT(m.number_of_faces(), 4 * faces_before);
+
+  // remesh_for_quadrangulation() takes this step on this mesh
+  auto fw = whole.property_map<Mesh::Edge_index, bool>("e:f").first;
+  const auto st = QR::remesh_for_quadrangulation(whole, fw);
+  BOOST_REQUIRE(whole.is_valid(false));
+  BOOST_CHECK_EQUAL(st.even_split_vertices, inserted);
+  BOOST_CHECK_EQUAL(st.coarse_edge_length, 0.);
+}
+
 // The uniform pass alone left chords along the curved hole borders (0.26% Hausdorff, coverage 0.971 at
 // 0.1% of the diagonal); the adaptive pass splits them back onto the input lines.
 BOOST_AUTO_TEST_CASE(plate_with_holes) { check_remeshing("plate_holes.off"); }
@@ -223,6 +273,7 @@ BOOST_AUTO_TEST_CASE(adaptive_parameters)
   // well-shaped triangles: a single uniform pass
   BOOST_CHECK_LT(su.split_blowup, 25.);
   BOOST_CHECK_EQUAL(su.coarse_edge_length, 0.);
+  BOOST_CHECK_EQUAL(su.even_split_vertices, 0u);
   const auto sd = QR::remesh_for_quadrangulation(m, f, QR::parameters::adaptive_remeshing(true));
   const auto sl = QR::remesh_for_quadrangulation(
     loose, fl, QR::parameters::combine(QR::parameters::adaptive_remeshing(true), QR::parameters::remeshing_tolerance(0.05)));
@@ -251,6 +302,7 @@ BOOST_AUTO_TEST_CASE(coarse_pass_for_thin_triangles)
   BOOST_CHECK_GT(st.split_blowup, 45.);
   BOOST_CHECK_CLOSE(st.coarse_edge_length, 4. * st.target_edge_length, 1e-9);
   BOOST_CHECK_GT(st.faces_coarse, 0u);
+  BOOST_CHECK_EQUAL(st.even_split_vertices, 0u); // the coarse pass instead
   BOOST_CHECK_LT(st.faces_coarse, st.faces_uniform / 4);
   // about as many faces as equilateral triangles of the target length cover the area
   const double expected = PMP::area(input) / (std::sqrt(3.) / 4. * CGAL::square(st.target_edge_length));

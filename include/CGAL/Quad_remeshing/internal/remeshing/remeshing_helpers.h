@@ -62,6 +62,114 @@ double radius_ratio(const Point& p, const Point& q, const Point& r)
   return std::max(0., std::min(1., v));
 }
 
+// Splits every edge longer than 4/3 of `length` into ceil(l / length) equal pieces (the pieces of a
+// feature edge are features; the new vertices are not constrained), then triangulates every face that
+// got new vertices by cutting ears, the shortest diagonal first, at its corners (the triangle's corners
+// and the ends of the diagonals cut so far; a vertex inside a side has a flat angle). A long, thin
+// triangle becomes a ladder of about as many triangles as its sides have pieces, where the split pass
+// of isotropic_remeshing(), which cuts the longest edge at its midpoint and joins it to the opposite
+// corner, makes about (l / length)^2 of them. The surface does not change. Returns the number of
+// vertices inserted.
+template <typename TriangleMesh, typename VPM, typename EdgeIsFeatureMap, typename VertexIsConstrainedMap>
+std::size_t split_long_edges_evenly(TriangleMesh& tmesh, const VPM& vpm, EdgeIsFeatureMap efm,
+                                    VertexIsConstrainedMap vcm, double length)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<VPM>::value_type Point;
+  std::vector<edge_descriptor> long_edges;
+  for(edge_descriptor e : edges(tmesh))
+  {
+    const double l2 = CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tmesh)), get(vpm, target(e, tmesh))));
+    if(l2 > CGAL::square(4. / 3. * length)) long_edges.push_back(e);
+  }
+  auto is_new = get(CGAL::dynamic_vertex_property_t<bool>(), tmesh);
+  for(vertex_descriptor v : vertices(tmesh)) put(is_new, v, false);
+  std::vector<face_descriptor> touched;
+  std::size_t inserted = 0;
+  for(edge_descriptor e : long_edges)
+  {
+    const halfedge_descriptor h = halfedge(e, tmesh);
+    const Point p = get(vpm, source(h, tmesh)), q = get(vpm, target(h, tmesh));
+    const bool feature = get(efm, e);
+    const int pieces = int(std::ceil(std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))) / length));
+    for(halfedge_descriptor g : {h, opposite(h, tmesh)})
+      if(!is_border(g, tmesh)) touched.push_back(face(g, tmesh));
+    // split_edge(h) inserts a vertex between source(h) and target(h) and returns the halfedge that ends
+    // at it; h keeps ending at target(h), so the next split cuts the remaining part
+    for(int i = 1; i < pieces; ++i)
+    {
+      const halfedge_descriptor n = CGAL::Euler::split_edge(h, tmesh);
+      const vertex_descriptor v = target(n, tmesh);
+      put(vpm, v, CGAL::barycenter(p, double(pieces - i), q, double(i)));
+      put(is_new, v, true);
+      put(vcm, v, false);
+      put(efm, edge(n, tmesh), feature);
+      put(efm, edge(h, tmesh), feature);
+      ++inserted;
+    }
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for(face_descriptor f : touched)
+  {
+    // the cycle as a linked list of positions; hedge[i] is the face's halfedge that ends at vertex i
+    std::vector<halfedge_descriptor> hedge;
+    for(halfedge_descriptor g : halfedges_around_face(halfedge(f, tmesh), tmesh)) hedge.push_back(g);
+    std::size_t n = hedge.size();
+    if(n <= 3) continue;
+    std::vector<std::size_t> prv(n), nxt(n);
+    std::vector<std::size_t> corners;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      prv[i] = (i + n - 1) % n;
+      nxt[i] = (i + 1) % n;
+      if(!get(is_new, target(hedge[i], tmesh))) corners.push_back(i);
+    }
+    while(n > 3)
+    {
+      std::size_t best = std::size_t(-1);
+      double best_d = 0.;
+      for(std::size_t i : corners)
+      {
+        const vertex_descriptor u = target(hedge[prv[i]], tmesh), w = target(hedge[nxt[i]], tmesh);
+        if(halfedge(u, w, tmesh).second) continue; // the diagonal would be a second u-w edge
+        const double d = CGAL::to_double(CGAL::squared_distance(get(vpm, u), get(vpm, w)));
+        if(best == std::size_t(-1) || d < best_d) { best = i; best_d = d; }
+      }
+      if(best == std::size_t(-1))
+      {
+        // no ear can be cut: a centre vertex joined to every vertex of the rest
+        const halfedge_descriptor c = CGAL::Euler::add_center_vertex(hedge[corners.front()], tmesh);
+        const vertex_descriptor v = target(c, tmesh);
+        put(vpm, v, CGAL::centroid(get(vpm, target(hedge[prv[corners.front()]], tmesh)),
+                                   get(vpm, target(hedge[corners.front()], tmesh)),
+                                   get(vpm, target(hedge[nxt[corners.front()]], tmesh))));
+        put(vcm, v, false);
+        for(halfedge_descriptor g : halfedges_around_target(c, tmesh)) put(efm, edge(g, tmesh), false);
+        ++inserted;
+        break;
+      }
+      const std::size_t u = prv[best], w = nxt[best];
+      // the new halfedge w -> u follows hedge[w]: the ear (u, best, w) is cut off; its opposite u -> w
+      // now ends at w in the remaining face
+      const halfedge_descriptor wu = CGAL::Euler::split_face(hedge[w], hedge[u], tmesh);
+      put(efm, edge(wu, tmesh), false);
+      hedge[w] = opposite(wu, tmesh);
+      nxt[u] = w;
+      prv[w] = u;
+      corners.erase(std::find(corners.begin(), corners.end(), best));
+      for(std::size_t k : {u, w})
+        if(std::find(corners.begin(), corners.end(), k) == corners.end()) corners.push_back(k);
+      --n;
+    }
+  }
+  return inserted;
+}
+
 // Final refinement (paper, Figure 5): a face whose three edges are features gets a centre vertex; then
 // every non-feature edge joining two feature vertices is split at its midpoint (projected on `tree`),
 // which also splits every face with two feature edges (their third edge is such an edge).
