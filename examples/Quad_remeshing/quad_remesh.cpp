@@ -61,7 +61,8 @@ bool stage_available(const std::string& name)
 
 const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
-  "                   [--sizing-tolerance F] [--feature-tolerance F] [--feature-angle DEG]\n"
+  "                   [--sizing-tolerance F] [--feature-tolerance F] [--surface-tolerance F]\n"
+  "                   [--feature-angle DEG]\n"
   "                   [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
@@ -79,6 +80,8 @@ const char* usage_text =
   "                       uniform; e.g. 0.002 brings curved meshes closer to the input, with more quads)\n"
   "  --feature-tolerance F quad edges along a bent feature line stay within F times the bounding-box\n"
   "                       diagonal of the line (default 0.002; 0: no bound)\n"
+  "  --surface-tolerance F quad edges across a bend of the surface (a fillet) stay within F times the\n"
+  "                       bounding-box diagonal along the normal (default 0: no bound; e.g. 0.002)\n"
   "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
   "  --features FILE      use these feature edges instead of detecting them (CGAL .polylines.txt\n"
   "                       or one 'i j' vertex-index pair per line)\n"
@@ -111,7 +114,7 @@ struct Options
 {
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
   double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.,
-         feature_tolerance = QR::internal::default_feature_tolerance;
+         feature_tolerance = QR::internal::default_feature_tolerance, surface_tolerance = 0.;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false;
@@ -165,6 +168,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--time-limit") o.time_limit = parse_number(a, value(), 0.);
     else if(a == "--sizing-tolerance") o.sizing_tolerance = parse_number(a, value(), 0.);
     else if(a == "--feature-tolerance") o.feature_tolerance = parse_number(a, value(), 0.);
+    else if(a == "--surface-tolerance") o.surface_tolerance = parse_number(a, value(), 0.);
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
@@ -428,7 +432,7 @@ private:
                                                                                                    *state_.layout);
     const QR::internal::Pipeline_quantization_problem qp = QR::internal::pipeline_quantization_problem(
       state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance,
-      opt_.feature_tolerance);
+      opt_.feature_tolerance, opt_.surface_tolerance);
     const QR::Side_quantization_problem& pb = qp.problem;
     if(!opt_.dump_dir.empty())
     {
@@ -443,7 +447,9 @@ private:
     budget_.record("quantize", r);
     r["sizing_tolerance"] = opt_.sizing_tolerance;
     r["feature_tolerance"] = opt_.feature_tolerance;
+    r["surface_tolerance"] = opt_.surface_tolerance;
     r["bent_feature_arcs"] = qp.bent_feature_arcs;
+    r["bent_surface_arcs"] = qp.bent_surface_arcs;
     if(!qp.sizing.empty()) r["smallest_local_quad_edge_length"] = *std::min_element(qp.sizing.begin(), qp.sizing.end());
     r["relaxed_patches"] = state_.polygons->relaxed_patches;
     r["added_corners"] = state_.polygons->added_corners;

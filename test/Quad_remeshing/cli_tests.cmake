@@ -30,6 +30,8 @@ qr_cli_test(negative_sizing_tolerance 2 ARGS ${QR_MESHES}/fandisk.off --sizing-t
             OUTPUT_MATCHES "invalid value '-0.1' for --sizing-tolerance")
 qr_cli_test(negative_feature_tolerance 2 ARGS ${QR_MESHES}/fandisk.off --feature-tolerance -0.1
             OUTPUT_MATCHES "invalid value '-0.1' for --feature-tolerance")
+qr_cli_test(negative_surface_tolerance 2 ARGS ${QR_MESHES}/fandisk.off --surface-tolerance -0.1
+            OUTPUT_MATCHES "invalid value '-0.1' for --surface-tolerance")
 qr_cli_test(missing_file 2 ARGS ${QR_CLI_OUT}/missing.off --report ${QR_CLI_OUT}/missing.json
             FILE ${QR_CLI_OUT}/missing.json FILE_MATCHES "\"status\": \"failed\".*cannot open")
 qr_cli_test(until_repair_nasty 0

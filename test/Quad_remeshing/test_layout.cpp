@@ -841,4 +841,26 @@ BOOST_AUTO_TEST_CASE(chord_minimum_of_a_quarter_circle)
   BOOST_CHECK_EQUAL(QRI::chord_minimum(std::vector<Point_3>{Point_3(0, 0, 0), Point_3(1, 0, 0)}, 1e-9, 100), 1);
 }
 
+// With normals, only the distance along them counts: a quarter circle on a cylinder (normals radial)
+// needs as many chords as without them (its sagitta is along the normal), a zigzag in a plane (normals
+// out of the plane: an edge path across a flat region) needs one where the full distance needs many.
+BOOST_AUTO_TEST_CASE(chord_minimum_along_normals)
+{
+  namespace QRI = CGAL::Quad_remeshing::internal;
+  typedef Point_3::R::Vector_3 Vector_3;
+  std::vector<Point_3> arc, zigzag;
+  std::vector<Vector_3> radial, up;
+  for(int i = 0; i <= 360; ++i) {
+    const double a = 0.5 * CGAL_PI * i / 360.;
+    arc.emplace_back(std::cos(a), 0., std::sin(a));
+    radial.emplace_back(std::cos(a), 0., std::sin(a));
+    zigzag.emplace_back(i / 360., (i % 2) * 0.05, 0.);
+    up.emplace_back(0., 0., 1.);
+  }
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(arc, 0.01, 100, radial), 6);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(arc, 0.05, 100, radial), 3);
+  BOOST_CHECK_EQUAL(QRI::chord_minimum(zigzag, 0.01, 100, up), 1);
+  BOOST_CHECK_GT(QRI::chord_minimum(zigzag, 0.01, 100), 10);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

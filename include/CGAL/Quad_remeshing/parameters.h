@@ -124,5 +124,9 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(sizing_tolerance_t, sizing_tolerance, si
 /// the quad edges along a bent feature line stay within this fraction of the bounding-box diagonal of
 /// the line (`double`, 0 = no bound): the quantization gives such arcs enough edges
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_tolerance_t, feature_tolerance, feature_tolerance)
+/// the quad edges of the layout's other arcs (across the surface) stay within this fraction of the
+/// bounding-box diagonal along the surface normal (`double`, 0 = no bound): the quantization gives an arc
+/// over a bend of the surface enough edges
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(surface_tolerance_t, surface_tolerance, surface_tolerance)
 
 #endif // CGAL_QUAD_REMESHING_PARAMETERS_H

@@ -88,6 +88,15 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`0.002`}
     \cgalParamNEnd
+    \cgalParamNBegin{surface_tolerance}
+      \cgalParamDescription{if positive, the quad edges of the layout's arcs that are not on a feature line stay within
+                            this fraction of the bounding-box diagonal along the surface normal: an arc over a bend
+                            of the surface (a fillet, a rounded body) gets at least the edges that takes, up to about
+                            twice its target count. The density elsewhere does not change (see the user manual for
+                            the measured effect)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0` (no such bound)}
+    \cgalParamNEnd
     \cgalParamNBegin{adaptive_remeshing}
       \cgalParamDescription{whether `remesh_for_quadrangulation()` runs its adaptive pass after the uniform one
                             (experimental, see there)}
@@ -180,12 +189,14 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   std::vector<int> counts;
   const internal::Pipeline_quantization_problem qp = internal::pipeline_quantization_problem(
     tm, layout, polygons, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.),
-    choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance));
+    choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance),
+    choose_parameter(get_parameter(np, internal_np::surface_tolerance), 0.));
   report["quantize"] = quantize_patch_sides(qp.problem, counts,
     QRP::number_of_threads(threads)
       .maximum_running_time(budget.stage_limit(internal::quantize_time_share))).report();
   budget.record("quantize", report["quantize"]);
   report["quantize"]["bent_feature_arcs"] = qp.bent_feature_arcs;
+  report["quantize"]["bent_surface_arcs"] = qp.bent_surface_arcs;
   if(!qp.sizing.empty())
     report["quantize"]["smallest_local_quad_edge_length"] = *std::min_element(qp.sizing.begin(), qp.sizing.end());
 

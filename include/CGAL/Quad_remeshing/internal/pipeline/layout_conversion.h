@@ -11,9 +11,12 @@
 #include <CGAL/Quad_remeshing/quantize_patch_sides.h>
 #include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -286,8 +289,9 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
 
 // The fewest straight edges, with ends at equal arc-length steps along the polyline `p`, that stay
 // within `tolerance` of it (every vertex of `p` within `tolerance` of the edge spanning it), at most `cap`.
-template <typename Point>
-int chord_minimum(const std::vector<Point>& p, double tolerance, int cap)
+// With `normals` (one per point of `p`), only the part of that distance along the point's normal counts.
+template <typename Point, typename Vector = typename CGAL::Kernel_traits<Point>::Kernel::Vector_3>
+int chord_minimum(const std::vector<Point>& p, double tolerance, int cap, const std::vector<Vector>& normals = {})
 {
   if(p.size() < 3 || cap <= 1) return 1;
   std::vector<double> at(p.size(), 0.); // arc length at every point
@@ -308,7 +312,18 @@ int chord_minimum(const std::vector<Point>& p, double tolerance, int cap)
     for(std::size_t i = 1; i + 1 < p.size() && fits; ++i) {
       const int k = (std::min)(n - 1, int(at[i] / total * n)); // the edge spanning point i
       const typename CGAL::Kernel_traits<Point>::Kernel::Segment_3 chord(point_at(total * k / n), point_at(total * (k + 1) / n));
-      fits = CGAL::to_double(CGAL::squared_distance(p[i], chord)) <= tol2;
+      if(normals.empty())
+        fits = CGAL::to_double(CGAL::squared_distance(p[i], chord)) <= tol2;
+      else
+      {
+        // only the part along the surface normal: the bend of the surface under the chord, not the
+        // zigzag of an edge path in the tangent plane
+        const auto d = chord.to_vector();
+        const double dd = CGAL::to_double(d * d);
+        const double t = dd > 0. ? (std::min)(1., (std::max)(0., CGAL::to_double((p[i] - chord.source()) * d) / dd)) : 0.;
+        const double h = CGAL::to_double((p[i] - (chord.source() + t * d)) * normals[i]);
+        fits = h * h <= tol2;
+      }
     }
     if(fits) return n;
   }
@@ -317,55 +332,72 @@ int chord_minimum(const std::vector<Point>& p, double tolerance, int cap)
 
 constexpr double default_feature_tolerance = 0.002; // quad_remesh()'s `feature_tolerance`
 
-// Raises the minimum edge count of every arc along a feature line (the boundary included) so that
-// its quad edges, placed at equal arc-length steps as the assembly does, follow the line within
-// `relative_tolerance` times the bounding-box diagonal: the quantization may otherwise give a bent
-// feature line so few edges that they cut its bends. Capped at 2 ceil(target) + 1 (quads there at most
-// about twice as long as wide). A tolerance <= 0 leaves every minimum at 1. Returns the number of
-// arcs whose minimum was raised.
+// Raises the minimum edge count of arcs so that their quad edges, placed at equal arc-length steps as the
+// assembly does, follow them: an arc along a feature line (the boundary included) within
+// `feature_tolerance`, and, when `surface_tolerance` > 0, any other arc within `surface_tolerance` along
+// the surface normal (the bend of the surface the arc crosses, not the zigzag of its edge path in the
+// tangent plane), both times the bounding-box diagonal. The quantization may otherwise give a bent
+// feature line, or a fillet crossed by an arc, so few edges that they cut its bends. Capped at
+// 2 ceil(target) + 1 (quads there at most about twice as long as wide). A tolerance <= 0 leaves those
+// minimums at 1. Returns the number of arcs along features and of other arcs whose minimum was raised.
 template <typename TriangleMesh, typename Layout, typename EdgeIsFeatureMap>
-std::size_t set_feature_chord_minimums(Side_quantization_problem& pb, const TriangleMesh& tm, const Layout& layout,
-                                const Quadrangulation_layout<TriangleMesh, Layout>& ql,
-                                EdgeIsFeatureMap edge_is_feature, double relative_tolerance)
+std::pair<std::size_t, std::size_t> set_chord_minimums(Side_quantization_problem& pb, const TriangleMesh& tm,
+                                                       const Layout& layout,
+                                                       const Quadrangulation_layout<TriangleMesh, Layout>& ql,
+                                                       EdgeIsFeatureMap edge_is_feature, double feature_tolerance,
+                                                       double surface_tolerance = 0.)
 {
-  if(!(relative_tolerance > 0) || num_vertices(tm) == 0) return 0;
-  const double tolerance = relative_tolerance * mesh_bbox_diagonal(tm);
-  std::size_t raised = 0;
+  std::pair<std::size_t, std::size_t> raised(0, 0);
+  if(!(feature_tolerance > 0 || surface_tolerance > 0) || num_vertices(tm) == 0) return raised;
+  const double diagonal = mesh_bbox_diagonal(tm);
   typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
   std::vector<Point> p;
+  std::vector<typename CGAL::Kernel_traits<Point>::Kernel::Vector_3> normals;
   for(std::size_t i = 0; i < ql.pieces.size() && i < pb.arcs.size(); ++i) {
     const auto& piece = ql.pieces[i];
     const auto& arc = layout.arcs()[piece.arc];
-    if(!get(edge_is_feature, edge(arc.halfedges[piece.first], tm))) continue;
+    const bool feature = get(edge_is_feature, edge(arc.halfedges[piece.first], tm));
+    const double tolerance = (feature ? feature_tolerance : surface_tolerance) * diagonal;
+    if(!(tolerance > 0)) continue;
     p.clear();
-    for(auto v : piece_vertices(tm, layout, piece)) p.push_back(get(CGAL::vertex_point, tm, v));
+    normals.clear();
+    for(auto v : piece_vertices(tm, layout, piece)) {
+      p.push_back(get(CGAL::vertex_point, tm, v));
+      if(!feature) normals.push_back(CGAL::Polygon_mesh_processing::compute_vertex_normal(v, tm));
+    }
     const int cap = 2 * static_cast<int>(std::ceil(pb.arcs[i].target)) + 1;
-    const int m = chord_minimum(p, tolerance, cap);
-    if(m > pb.arcs[i].minimum) { pb.arcs[i].minimum = m; ++raised; }
+    const int m = chord_minimum(p, tolerance, cap, normals);
+    if(m > pb.arcs[i].minimum) {
+      pb.arcs[i].minimum = m;
+      ++(feature ? raised.first : raised.second);
+    }
   }
   return raised;
 }
 
 // The quantization problem of a traced layout as the pipeline builds it (quad_remesh(), the command
 // line and the stage benchmark share it): the targets in the local quad edge length of quad_sizing()
-// (uniform when `sizing_tolerance` <= 0), then the minimums of the arcs along bent feature lines.
+// (uniform when `sizing_tolerance` <= 0), then the minimums of the bent arcs (set_chord_minimums()).
 struct Pipeline_quantization_problem
 {
   Side_quantization_problem problem;
-  std::vector<double> sizing;       // the local quad edge length per vertex (empty: uniform)
-  std::size_t bent_feature_arcs = 0; // arcs whose minimum set_feature_chord_minimums() raised
+  std::vector<double> sizing;        // the local quad edge length per vertex (empty: uniform)
+  std::size_t bent_feature_arcs = 0; // arcs along features whose minimum set_chord_minimums() raised
+  std::size_t bent_surface_arcs = 0; // other arcs whose minimum it raised
 };
 
 template <typename TriangleMesh, typename Layout, typename EdgeIsFeatureMap>
 Pipeline_quantization_problem pipeline_quantization_problem(const TriangleMesh& tm, const Layout& layout,
                                                             const Quadrangulation_layout<TriangleMesh, Layout>& ql,
                                                             EdgeIsFeatureMap edge_is_feature, double quad_edge_length,
-                                                            double sizing_tolerance, double feature_tolerance)
+                                                            double sizing_tolerance, double feature_tolerance,
+                                                            double surface_tolerance = 0.)
 {
   Pipeline_quantization_problem r;
   r.sizing = quad_sizing(tm, edge_is_feature, quad_edge_length, sizing_tolerance);
   r.problem = quantization_problem(tm, layout, ql, quad_edge_length, r.sizing);
-  r.bent_feature_arcs = set_feature_chord_minimums(r.problem, tm, layout, ql, edge_is_feature, feature_tolerance);
+  std::tie(r.bent_feature_arcs, r.bent_surface_arcs) =
+    set_chord_minimums(r.problem, tm, layout, ql, edge_is_feature, feature_tolerance, surface_tolerance);
   return r;
 }
 
