@@ -567,7 +567,8 @@ BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
   BOOST_TEST(s.layout.patches == 2u);
   BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   BOOST_TEST(s.layout.quality_patches == 2u);
-  const std::vector<std::string> names{"features", "convexity", "loops", "border_to_border", "recursion", "last_resort"};
+  const std::vector<std::string> names{"features", "convexity", "loops", "border_to_border", "recursion", "last_resort",
+                                       "last_resort_cuts"};
   BOOST_TEST(s.rounds.size() == names.size());
   for(std::size_t i = 0; i < names.size() && i < s.rounds.size(); ++i) BOOST_TEST(s.rounds[i].name == names[i]);
   BOOST_TEST(s.rounds[1].paths >= 1u);
@@ -583,6 +584,43 @@ BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
   BOOST_TEST(bs.layout.patches == 6u);
   BOOST_TEST(bs.layout.paths == 12u);
   BOOST_TEST(bs.layout.valid_patches == 6u);
+}
+
+BOOST_AUTO_TEST_CASE(last_resort_cut_splits_a_concave_patch)
+{
+  // A feature line from the left border to (3,3), then up to the top border, leaves an L-shaped patch
+  // with a left turn at (3,3): the last-resort cut continues one of the two legs to the border.
+  const int n = 6;
+  Mesh m = grid(n);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  auto feature = m.add_property_map<E, bool>("e:feature", false).first;
+  auto at = [&](int i, int j) { return V(j * (n + 1) + i); };
+  for(int i = 0; i < 3; ++i) feature[m.edge(m.halfedge(at(i, 3), at(i + 1, 3)))] = true;
+  for(int j = 3; j < n; ++j) feature[m.edge(m.halfedge(at(3, j), at(3, j + 1)))] = true;
+  Layout layout(m, field, no_singularity);
+  layout.add_feature_paths(feature);
+  BOOST_REQUIRE(layout.number_of_patches() == 2u);
+  std::size_t concave = 0, cuts_before = 0;
+  for(std::size_t p = 0; p < 2; ++p) if(layout.validity(p) == Layout::NOT_CONVEX) concave = p;
+  BOOST_REQUIRE(layout.validity(concave) == Layout::NOT_CONVEX);
+  BOOST_REQUIRE(layout.validity(1 - concave) == Layout::SATISFIED);
+  for(E e : m.edges()) cuts_before += layout.is_cut(e);
+
+  CGAL::Quad_remeshing::internal::Layout_tracer<Layout> tracer(layout);
+  BOOST_TEST(tracer.last_resort_cut(1 - concave) == 0u); // a valid patch is left alone
+  BOOST_TEST(tracer.last_resort_cut(concave) == 1u);
+  BOOST_TEST(layout.number_of_patches() == 3u);
+  for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(layout.validity(p) == Layout::SATISFIED);
+  // the cut is one of the two straight continuations: three grid edges, from (3,3) to the border
+  std::size_t cuts_after = 0;
+  for(E e : m.edges()) cuts_after += layout.is_cut(e);
+  BOOST_TEST(cuts_after == cuts_before + 3u);
+  const bool right = layout.is_cut(m.edge(m.halfedge(at(3, 3), at(4, 3)))) && layout.is_cut(m.edge(m.halfedge(at(5, 3), at(6, 3))));
+  const bool down = layout.is_cut(m.edge(m.halfedge(at(3, 3), at(3, 2)))) && layout.is_cut(m.edge(m.halfedge(at(3, 1), at(3, 0))));
+  BOOST_TEST((right || down));
+  for(E e : m.edges()) if(feature[e]) BOOST_TEST(layout.is_cut(e));
+  // nothing is left to cut
+  for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(tracer.last_resort_cut(p) == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(fandisk_rounds)
@@ -602,7 +640,7 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9); // 170/176 with the stand-in field
   BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
   BOOST_TEST(s.stopped_in_round.empty());
-  BOOST_TEST(s.rounds.size() == 6u);
+  BOOST_TEST(s.rounds.size() == 7u);
 
   // the candidates traced in three threads: the same layout
   Layout parallel(m, field, no_singularity);
@@ -621,7 +659,7 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   BOOST_TEST(sc.stopped_in_round == "loops");
   std::vector<std::string> names;
   for(const auto& r : sc.rounds) names.push_back(r.name);
-  BOOST_TEST((names == std::vector<std::string>{"features", "convexity", "loops", "last_resort"}));
+  BOOST_TEST((names == std::vector<std::string>{"features", "convexity", "loops", "last_resort", "last_resort_cuts"}));
   BOOST_TEST(sc.rounds[1].paths == s.rounds[1].paths); // the convexity round ran to its end
   BOOST_TEST(sc.rounds[2].paths == 0u);
   BOOST_TEST(sc.report().find("stopped_early")->boolean());

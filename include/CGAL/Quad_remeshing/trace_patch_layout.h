@@ -486,6 +486,142 @@ public:
     return added;
   }
 
+  // How far a disk patch is from valid: its left turns, twice its U-turns, and the number of corners it
+  // lacks or has too many (0 for a valid patch). A patch that is not a disk counts more than any disk.
+  std::size_t badness(const Patch& P) const
+  {
+    if(layout_.validity(P) == Layout::NOT_A_DISK) return std::numeric_limits<std::size_t>::max() / 4;
+    std::size_t b = 0;
+    for(Turn t : P.turns[0]) b += t == Layout::LEFT_TURN ? 1 : (t == Layout::U_TURN ? 2 : 0);
+    const std::size_t c = P.corners.size();
+    return b + (c < 3 ? 3 - c : (c > 6 ? c - 6 : 0));
+  }
+
+  // Cuts a disk patch that is not convex or has fewer than 3 or more than 6 corners along a shortest edge
+  // path through its interior (Euclidean lengths; interior vertices and edges of the patch only) between
+  // two of its boundary vertices, which need not follow the field. The path starts at a left turn or
+  // U-turn of a non-convex patch, at any boundary vertex otherwise (at most `max_starts` of them, spread
+  // along the loop), and ends at any other boundary vertex (at most `max_ends` per start). Of the
+  // candidates, the one leaving the fewest invalid patches is taken, then the lowest total `badness()`,
+  // then one making no patch of fewer than `min_patch_faces` faces, then the shortest, its edges weighted
+  // by how far they leave the field. It is inserted only when it lowers the badness and leaves at most
+  // one invalid patch, so the number of invalid patches never grows and repeated cuts end. Returns 1 if a
+  // path was inserted.
+  std::size_t last_resort_cut(std::size_t p)
+  {
+    const Patch P = layout_.patch(p);
+    const auto condition = layout_.validity(P);
+    if(condition != Layout::NOT_CONVEX && condition != Layout::BAD_VALENCE) return 0;
+    constexpr std::size_t max_starts = 12, max_ends = 16;
+    const std::vector<halfedge_descriptor>& loop = P.loops[0];
+    std::vector<char> on_loop(verts_.size(), 0);
+    for(halfedge_descriptor h : loop) on_loop[layout_.vertex_index(target(h, tm_))] = 1;
+    std::vector<std::size_t> starts;
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      if(condition == Layout::BAD_VALENCE || P.turns[0][i] == Layout::LEFT_TURN || P.turns[0][i] == Layout::U_TURN)
+        starts.push_back(layout_.vertex_index(target(loop[i], tm_)));
+    if(starts.size() > max_starts) {
+      std::vector<std::size_t> spread;
+      for(std::size_t i = 0; i < max_starts; ++i) spread.push_back(starts[i * starts.size() / max_starts]);
+      starts.swap(spread);
+    }
+    // the candidates: shortest paths through the patch interior from the starts to boundary vertices (the
+    // paths traced along the field were tried by the recursion)
+    std::vector<Path> candidates;
+    std::vector<double> d(verts_.size(), std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> pred(verts_.size(), std::size_t(-1)), touched;
+    typedef std::pair<double, std::size_t> Item;
+    for(std::size_t s : starts) {
+      // Dijkstra from s through the patch interior; boundary vertices end a path
+      std::vector<std::size_t> ends;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+      d[s] = 0.;
+      touched.push_back(s);
+      q.push({0., s});
+      while(!q.empty()) {
+        const Item it = q.top();
+        q.pop();
+        if(it.first > d[it.second]) continue;
+        if(it.second != s && on_loop[it.second]) { ends.push_back(it.second); continue; }
+        for(halfedge_descriptor h : halfedges_around_target(verts_[it.second], tm_)) {
+          if(layout_.is_cut(edge(h, tm_)) || is_border(h, tm_) || layout_.patch_id(face(h, tm_)) != p) continue;
+          const std::size_t w = layout_.vertex_index(source(h, tm_));
+          if(w == s) continue;
+          const double nd = it.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(verts_[it.second]), layout_.point(verts_[w]))));
+          if(nd < d[w]) {
+            if(d[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
+            d[w] = nd;
+            pred[w] = it.second;
+            q.push({nd, w});
+          }
+        }
+      }
+      const std::size_t n_ends = (std::min)(ends.size(), max_ends);
+      for(std::size_t k = 0; k < n_ends; ++k) {
+        Path c;
+        for(std::size_t v = ends[k * ends.size() / n_ends]; v != std::size_t(-1); v = pred[v]) c.vertices.push_back(verts_[v]);
+        std::reverse(c.vertices.begin(), c.vertices.end());
+        for(std::size_t i = 0; i + 1 < c.vertices.size(); ++i) {
+          Vector u = layout_.point(c.vertices[i + 1]) - layout_.point(c.vertices[i]);
+          const double l = std::sqrt(CGAL::to_double(u * u));
+          c.directions.push_back(l > 0. ? u / l : u);
+        }
+        candidates.push_back(std::move(c));
+      }
+      for(std::size_t v : touched) { d[v] = std::numeric_limits<double>::infinity(); pred[v] = std::size_t(-1); }
+      touched.clear();
+    }
+
+    struct Key
+    {
+      std::size_t invalid, badness;
+      bool tiny;
+      double cost;
+      bool operator<(const Key& o) const
+      {
+        if(invalid != o.invalid) return invalid < o.invalid;
+        if(badness != o.badness) return badness < o.badness;
+        if(tiny != o.tiny) return !tiny;
+        return cost < o.cost;
+      }
+    };
+    const std::size_t before = badness(P);
+    bool found = false;
+    Key best{0, 0, false, 0.};
+    std::size_t best_index = 0;
+    Patch_change best_change;
+    for(std::size_t i = 0; i < candidates.size(); ++i) {
+      const Path& c = candidates[i];
+      if(c.vertices.size() < 2) continue;
+      Patch_change change = layout_.preview_add_path(c);
+      // the length, each edge weighted up to 3 times as it leaves the field directions (45 degrees)
+      double cost = 0.;
+      for(std::size_t j = 0; j + 1 < c.vertices.size(); ++j) {
+        const Vector u = layout_.point(c.vertices[j + 1]) - layout_.point(c.vertices[j]);
+        const double l = std::sqrt(CGAL::to_double(u * u));
+        const Node n = layout_.closest_node(c.vertices[j], u);
+        const double cosine = l > 0. ? std::abs(CGAL::to_double(u * layout_.direction(n.vertex, n.direction))) / l : 1.;
+        cost += l * (1. + 2. * (1. - cosine) / (1. - std::sqrt(0.5)));
+      }
+      Key key{0, 0, false, cost};
+      for(const Patch& N : change.new_patches) {
+        key.invalid += layout_.validity(N) != Layout::SATISFIED;
+        key.badness += badness(N);
+        key.tiny = key.tiny || N.faces.size() < min_patch_faces;
+      }
+      if(key.invalid <= 1 && key.badness < before && (!found || key < best)) {
+        found = true;
+        best = key;
+        best_index = i;
+        best_change = std::move(change);
+      }
+    }
+    if(!found) return 0;
+    layout_.add_path(std::move(candidates[best_index]), std::move(best_change));
+    return 1;
+  }
+
+
   // Dissolves inserted paths on the boundary of invalid patches when that lowers the number of invalid
   // patches among the patches they separate (a sliver cut off by two close paths goes back into its
   // neighbour); the merged patch can then be repaired again by the recursion.
@@ -569,7 +705,14 @@ private:
     patches are dissolved when that lowers the number of invalid patches (slivers between close paths);
   - `last_resort`: a patch that is still not a disk is cut without following the field: along the
     shortest edge path joining two of its boundary loops, or, for a closed patch or one with a handle,
-    along the border of the ball of half its faces; repeated (at most 64 times) until every patch is a disk.
+    along the border of the ball of half its faces; repeated (at most 64 times) until every patch is a disk;
+  - `last_resort_cuts` (after the clean-up, so that the other paths are the ones it keeps): a disk patch
+    that is not convex or has fewer than 3 or more than 6 corners is cut along a shortest edge path
+    through its interior from one of its left turns or U-turns (from any boundary vertex when it is
+    convex) to another boundary vertex, which need not follow the field. The cut taken leaves the fewest
+    invalid patches, then the smallest sum of left turns, twice the U-turns and missing or extra corners,
+    and it must lower that sum and leave at most one invalid patch, so the number of invalid patches
+    never grows; a patch is cut again while a cut helps.
 
   In every round the candidates are tried farthest-first (the next one is the one whose vertices are, on
   average, farthest from the paths already inserted, features included) and kept by one acceptance rule:
@@ -582,8 +725,9 @@ private:
   they separate, merged, are valid, and meet the quality conditions if one of them did.
 
   Not guaranteed: convexity and the number of sides of every patch. The last resort makes every patch a
-  disk; a disk patch left non-convex or with fewer than 3 or more than 6 corners is counted in the figures
-  (the pipeline then chooses corners for it, see `quad_remesh()`).
+  disk; a disk patch that no cut improves (typically a sliver of a few triangles between close paths, or
+  two feature lines one triangle apart) is left non-convex or with fewer than 3 or more than 6 corners and
+  counted in the figures (the pipeline then chooses corners for it, see `quad_remesh()`).
 
   \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
   \tparam EdgeIsFeatureMap a readable property map, key `edge_descriptor`, value `bool`
@@ -612,7 +756,7 @@ private:
       \cgalParamDescription{a time limit in seconds for the rounds: once reached, the round running stops
                             (no more candidates are traced or tried) and the later rounds are skipped. The
                             features and convexity rounds (most patches convex), the last resort (every
-                            patch a disk) and the clean-up always run to their end. `stopped_in_round` of the
+                            patch a disk), the clean-up and the last-resort cuts always run to their end. `stopped_in_round` of the
                             result names the round that stopped}
       \cgalParamType{`double`}
       \cgalParamDefault{`0` (no limit)}
@@ -740,6 +884,14 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
     }
   }, false);
   stats.removed_paths = tracer.clean_up();
+  // after the clean-up, which then leaves the same paths as without them: disks that are not convex or have
+  // a bad number of corners are cut. A cut changes its own patch only (the second part is appended to the
+  // patches), so one pass over the growing list tries every patch until no cut helps it; every cut lowers
+  // the badness, so the pass ends.
+  run("last_resort_cuts", [&](Round& r) {
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+      while(tracer.last_resort_cut(p) > 0) ++r.paths;
+  }, false);
   stats.layout = layout.statistics();
   stats.seconds = total.time();
   if(verbose)

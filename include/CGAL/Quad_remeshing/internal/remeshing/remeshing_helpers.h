@@ -108,7 +108,6 @@ std::size_t split_long_edges_evenly(TriangleMesh& tmesh, const VPM& vpm, EdgeIsF
       put(is_new, v, true);
       put(vcm, v, false);
       put(efm, edge(n, tmesh), feature);
-      put(efm, edge(h, tmesh), feature);
       ++inserted;
     }
   }
