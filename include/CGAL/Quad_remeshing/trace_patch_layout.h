@@ -208,6 +208,12 @@ public:
 
   // ---- distances to the paths, for the farthest-first order (paper's "Candidate Sorting")
 
+  // the length of the edge between the vertices of indices `a` and `b`
+  double distance(std::size_t a, std::size_t b) const
+  {
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(verts_[a]), layout_.point(verts_[b]))));
+  }
+
   // graph distance (along mesh edges) of every vertex to the nearest path or border vertex
   void reset_distances()
   {
@@ -235,7 +241,7 @@ public:
       const vertex_descriptor v = verts_[it.second];
       for(halfedge_descriptor h : halfedges_around_target(v, tm_)) {
         const std::size_t w = layout_.vertex_index(source(h, tm_));
-        const double d = it.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(v), layout_.point(verts_[w]))));
+        const double d = it.first + distance(it.second, w);
         if(d < dist_[w]) { dist_[w] = d; q.push({d, w}); }
       }
     }
@@ -385,6 +391,29 @@ public:
 
   // ---- last resort: cuts that are not traced along the field, for patches no traced path can make disks
 
+  typedef decltype(std::declval<typename Layout::Point_3>() - std::declval<typename Layout::Point_3>()) Vector;
+
+  // the path along `vs`, each edge with its own unit direction (the last-resort cuts do not follow the field)
+  Path straight_path(std::vector<vertex_descriptor> vs) const
+  {
+    Path q;
+    q.vertices = std::move(vs);
+    for(std::size_t i = 0; i + 1 < q.vertices.size(); ++i) {
+      const Vector e = layout_.point(q.vertices[i + 1]) - layout_.point(q.vertices[i]);
+      const double l = std::sqrt(CGAL::to_double(e * e));
+      q.directions.push_back(l > 0. ? e / l : e);
+    }
+    return q;
+  }
+  // the straight path from the source of a search to vertex index `end`, along the predecessors `pred`
+  Path straight_path_to(std::size_t end, const std::vector<std::size_t>& pred) const
+  {
+    std::vector<vertex_descriptor> vs;
+    for(std::size_t v = end; v != std::size_t(-1); v = pred[v]) vs.push_back(verts_[v]);
+    std::reverse(vs.begin(), vs.end());
+    return straight_path(std::move(vs));
+  }
+
   // Adds the edges between `region` faces and the other faces of patch `p` as one-edge paths.
   void cut_between(std::size_t p, const std::vector<char>& in_region, const std::vector<face_descriptor>& faces,
                    std::size_t& added)
@@ -399,17 +428,12 @@ public:
         if(in_region[get(findex, f)] && !in_region[get(findex, face(o, tm_))]) cut.push_back({source(h, tm_), target(h, tm_)});
       }
     for(const auto& e : cut) {
-      Path q;
-      q.vertices = {e.first, e.second};
-      Vector d = layout_.point(e.second) - layout_.point(e.first);
-      const double l = std::sqrt(CGAL::to_double(d * d));
-      q.directions = {l > 0. ? d / l : d};
+      Path q = straight_path({e.first, e.second});
       auto c = layout_.preview_add_path(q);
       layout_.add_path(std::move(q), std::move(c));
       ++added;
     }
   }
-  typedef decltype(std::declval<typename Layout::Point_3>() - std::declval<typename Layout::Point_3>()) Vector;
 
   // Splits a patch that is not a disk: a patch with several boundary loops is cut along the shortest edge
   // path (Euclidean lengths, inside the patch) from its first loop to another loop, which joins the two; any
@@ -450,19 +474,12 @@ public:
           const bool inside = (!is_border(h, tm_) && layout_.patch_id(face(h, tm_)) == p) ||
                               (!is_border(o, tm_) && layout_.patch_id(face(o, tm_)) == p);
           if(!inside) continue;
-          const double nd = it.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(verts_[it.second]), layout_.point(verts_[w]))));
+          const double nd = it.first + distance(it.second, w);
           if(nd < d[w]) { d[w] = nd; pred[w] = it.second; q.push({nd, w}); }
         }
       }
       if(reached != std::size_t(-1)) {
-        Path q2;
-        for(std::size_t v = reached; v != std::size_t(-1); v = pred[v]) q2.vertices.push_back(verts_[v]);
-        std::reverse(q2.vertices.begin(), q2.vertices.end());
-        for(std::size_t i = 0; i + 1 < q2.vertices.size(); ++i) {
-          Vector e = layout_.point(q2.vertices[i + 1]) - layout_.point(q2.vertices[i]);
-          const double l = std::sqrt(CGAL::to_double(e * e));
-          q2.directions.push_back(l > 0. ? e / l : e);
-        }
+        Path q2 = straight_path_to(reached, pred);
         if(q2.vertices.size() >= 2) {
           auto c = layout_.preview_add_path(q2);
           layout_.add_path(std::move(q2), std::move(c));
@@ -547,7 +564,7 @@ public:
           if(layout_.is_cut(edge(h, tm_)) || is_border(h, tm_) || layout_.patch_id(face(h, tm_)) != p) continue;
           const std::size_t w = layout_.vertex_index(source(h, tm_));
           if(w == s) continue;
-          const double nd = it.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout_.point(verts_[it.second]), layout_.point(verts_[w]))));
+          const double nd = it.first + distance(it.second, w);
           if(nd < d[w]) {
             if(d[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
             d[w] = nd;
@@ -557,17 +574,7 @@ public:
         }
       }
       const std::size_t n_ends = (std::min)(ends.size(), max_ends);
-      for(std::size_t k = 0; k < n_ends; ++k) {
-        Path c;
-        for(std::size_t v = ends[k * ends.size() / n_ends]; v != std::size_t(-1); v = pred[v]) c.vertices.push_back(verts_[v]);
-        std::reverse(c.vertices.begin(), c.vertices.end());
-        for(std::size_t i = 0; i + 1 < c.vertices.size(); ++i) {
-          Vector u = layout_.point(c.vertices[i + 1]) - layout_.point(c.vertices[i]);
-          const double l = std::sqrt(CGAL::to_double(u * u));
-          c.directions.push_back(l > 0. ? u / l : u);
-        }
-        candidates.push_back(std::move(c));
-      }
+      for(std::size_t k = 0; k < n_ends; ++k) candidates.push_back(straight_path_to(ends[k * ends.size() / n_ends], pred));
       for(std::size_t v : touched) { d[v] = std::numeric_limits<double>::infinity(); pred[v] = std::size_t(-1); }
       touched.clear();
     }
@@ -591,8 +598,7 @@ public:
     std::size_t best_index = 0;
     Patch_change best_change;
     for(std::size_t i = 0; i < candidates.size(); ++i) {
-      const Path& c = candidates[i];
-      if(c.vertices.size() < 2) continue;
+      const Path& c = candidates[i]; // at least one edge: the ends are other vertices than the start
       Patch_change change = layout_.preview_add_path(c);
       // the length, each edge weighted up to 3 times as it leaves the field directions (45 degrees)
       double cost = 0.;
@@ -620,7 +626,6 @@ public:
     layout_.add_path(std::move(candidates[best_index]), std::move(best_change));
     return 1;
   }
-
 
   // Dissolves inserted paths on the boundary of invalid patches when that lowers the number of invalid
   // patches among the patches they separate (a sliver cut off by two close paths goes back into its
@@ -756,8 +761,8 @@ private:
       \cgalParamDescription{a time limit in seconds for the rounds: once reached, the round running stops
                             (no more candidates are traced or tried) and the later rounds are skipped. The
                             features and convexity rounds (most patches convex), the last resort (every
-                            patch a disk), the clean-up and the last-resort cuts always run to their end. `stopped_in_round` of the
-                            result names the round that stopped}
+                            patch a disk), the clean-up and the last-resort cuts always run to their end.
+                            `stopped_in_round` of the result names the round that stopped}
       \cgalParamType{`double`}
       \cgalParamDefault{`0` (no limit)}
     \cgalParamNEnd
