@@ -568,7 +568,7 @@ BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
   BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   BOOST_TEST(s.layout.quality_patches == 2u);
   const std::vector<std::string> names{"features", "convexity", "loops", "border_to_border", "recursion", "last_resort",
-                                       "last_resort_cuts"};
+                                       "last_resort_cuts", "path_part_removal"};
   BOOST_TEST(s.rounds.size() == names.size());
   for(std::size_t i = 0; i < names.size() && i < s.rounds.size(); ++i) BOOST_TEST(s.rounds[i].name == names[i]);
   BOOST_TEST(s.rounds[1].paths >= 1u);
@@ -623,6 +623,76 @@ BOOST_AUTO_TEST_CASE(last_resort_cut_splits_a_concave_patch)
   for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(tracer.last_resort_cut(p) == 0u);
 }
 
+BOOST_AUTO_TEST_CASE(path_part_removal_merges_a_concave_patch)
+{
+  // Path A runs along row 4 from border to border. Path U comes down column 1 from the top border, crosses
+  // A, turns right along row 2 and comes back up column 4 to end on A. The patch under A, outside U, has
+  // two left turns at (1,2) and (4,2); the whole of U cannot go (its upper part splits the top strip), but
+  // its part from the crossing (1,4) to (4,4) can: the patch then merges with the one inside U.
+  const int n = 6;
+  Mesh m = grid(n);
+  auto field = m.add_property_map<F, Vector_3>("f:field", Vector_3(1, 0, 0)).first;
+  auto at = [&](int i, int j) { return V(j * (n + 1) + i); };
+  auto path = [&](const std::vector<std::pair<int, int>>& ij) {
+    Layout::Path p;
+    for(const auto& c : ij) p.vertices.push_back(at(c.first, c.second));
+    for(std::size_t k = 0; k + 1 < p.vertices.size(); ++k) {
+      const Vector_3 d = m.point(p.vertices[k + 1]) - m.point(p.vertices[k]);
+      p.directions.push_back(d / std::sqrt(d.squared_length()));
+    }
+    return p;
+  };
+  const Layout::Path a = path({{0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}, {5, 4}, {6, 4}});
+  const Layout::Path u = path({{1, 6}, {1, 5}, {1, 4}, {1, 3}, {1, 2}, {2, 2}, {3, 2}, {4, 2}, {4, 3}, {4, 4}});
+  Layout layout(m, field, no_singularity);
+  layout.add_path(a);
+  const std::size_t u_id = layout.add_path(u);
+  BOOST_REQUIRE(layout.number_of_patches() == 4u);
+  const std::size_t outside = layout.patch_id(m.face(m.halfedge(at(0, 0), at(1, 0))));
+  BOOST_REQUIRE(layout.validity(outside) == Layout::NOT_CONVEX);
+  BOOST_TEST(layout.is_on_feature_path(m.edge(m.halfedge(at(0, 4), at(1, 4)))) == false);
+  BOOST_TEST(layout.number_of_paths(m.edge(m.halfedge(at(1, 4), at(1, 3)))) == 1);
+
+  // the public operation: preview, then remove the part of U from its vertex 2 to its vertex 9
+  auto change = layout.preview_remove_path_part(u_id, 2, 9);
+  BOOST_TEST(change.old_patches.size() == 2u);
+  BOOST_TEST(change.new_patches.size() == 1u);
+  BOOST_TEST(layout.number_of_patches() == 4u); // a preview changes nothing
+  BOOST_CHECK_THROW(layout.preview_remove_path_part(u_id, 5, 5), std::invalid_argument);
+  const std::vector<std::size_t> kept = layout.remove_path_part(u_id, 2, 9, std::move(change));
+  BOOST_TEST_REQUIRE(kept.size() == 1u); // the upper piece; nothing comes after vertex 9
+  BOOST_TEST((layout.path(kept[0]).vertices == std::vector<V>{at(1, 6), at(1, 5), at(1, 4)}));
+  BOOST_TEST(layout.path(kept[0]).directions.size() == 2u);
+  BOOST_TEST(layout.path_ids().size() == 2u);
+  BOOST_TEST(layout.number_of_patches() == 3u);
+  for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(layout.validity(p) == Layout::SATISFIED);
+  BOOST_TEST(!layout.is_cut(m.edge(m.halfedge(at(1, 3), at(1, 4)))));
+  BOOST_TEST(layout.is_cut(m.edge(m.halfedge(at(1, 4), at(1, 5)))));
+  // the same patches as a layout built with the paths left
+  Layout fresh(m, field, no_singularity);
+  fresh.add_path(a);
+  fresh.add_path(layout.path(kept[0]));
+  BOOST_TEST_REQUIRE(fresh.number_of_patches() == layout.number_of_patches());
+  for(F f : m.faces())
+    for(F g : m.faces()) if((fresh.patch_id(f) == fresh.patch_id(g)) != (layout.patch_id(f) == layout.patch_id(g))) BOOST_FAIL("patches differ");
+
+  // the tracer finds that part by itself: between the junctions (1,4) and (4,4), the only part whose
+  // removal makes the concave patch valid
+  Layout traced(m, field, no_singularity);
+  traced.add_path(a);
+  traced.add_path(u);
+  CGAL::Quad_remeshing::internal::Layout_tracer<Layout> tracer(traced);
+  const std::size_t concave = traced.patch_id(m.face(m.halfedge(at(0, 0), at(1, 0))));
+  for(std::size_t p = 0; p < traced.number_of_patches(); ++p)
+    if(p != concave) BOOST_TEST(tracer.merge_across_path_part(p, false) == 0u); // valid patches are left alone
+  BOOST_TEST(tracer.merge_across_path_part(concave, false) == 1u);
+  BOOST_TEST(traced.number_of_patches() == 3u);
+  BOOST_TEST(tracer.invalid_patches() == 0u);
+  BOOST_TEST(!traced.is_cut(m.edge(m.halfedge(at(2, 2), at(3, 2)))));
+  BOOST_TEST(traced.is_cut(m.edge(m.halfedge(at(1, 5), at(1, 6)))));
+  BOOST_TEST(traced.is_cut(m.edge(m.halfedge(at(3, 4), at(4, 4)))));
+}
+
 BOOST_AUTO_TEST_CASE(fandisk_rounds)
 {
   Mesh m;
@@ -637,10 +707,11 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
             << s.layout.quality_patches << " quality, " << s.layout.paths << " paths, " << s.seconds << " s\n";
   // every feature edge stays on a patch boundary
   for(E e : m.edges()) if(feature[e]) BOOST_TEST(layout.is_cut(e));
-  BOOST_TEST(s.layout.valid_patches * 10 >= s.layout.patches * 9); // 170/176 with the stand-in field
+  // every patch valid (309 of 309 with the stand-in field)
+  BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
   BOOST_TEST(s.stopped_in_round.empty());
-  BOOST_TEST(s.rounds.size() == 7u);
+  BOOST_TEST(s.rounds.size() == 8u);
 
   // the candidates traced in three threads: the same layout
   Layout parallel(m, field, no_singularity);
@@ -659,7 +730,8 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   BOOST_TEST(sc.stopped_in_round == "loops");
   std::vector<std::string> names;
   for(const auto& r : sc.rounds) names.push_back(r.name);
-  BOOST_TEST((names == std::vector<std::string>{"features", "convexity", "loops", "last_resort", "last_resort_cuts"}));
+  BOOST_TEST((names == std::vector<std::string>{"features", "convexity", "loops", "last_resort", "last_resort_cuts",
+                                                     "path_part_removal"}));
   BOOST_TEST(sc.rounds[1].paths == s.rounds[1].paths); // the convexity round ran to its end
   BOOST_TEST(sc.rounds[2].paths == 0u);
   BOOST_TEST(sc.report().find("stopped_early")->boolean());

@@ -370,6 +370,46 @@ public:
     apply(std::move(c));
   }
 
+  /// the change removing the edges of the path `id` from its vertex `i` to its vertex `j` (`i < j`) would
+  /// make (the layout is left as it is)
+  Patch_change preview_remove_path_part(std::size_t id, std::size_t i, std::size_t j)
+  {
+    if(id >= paths_.size() || !alive_[id] || !(i < j) || j >= paths_[id].vertices.size())
+      throw std::invalid_argument("Patch_layout::preview_remove_path_part: no such path part");
+    const std::vector<std::size_t> ids = edge_ids(paths_[id]);
+    return preview(std::vector<std::size_t>(ids.begin() + std::ptrdiff_t(i), ids.begin() + std::ptrdiff_t(j)), -1,
+                   paths_[id].is_feature);
+  }
+
+  /// removes the edges of the path `id` from its vertex `i` to its vertex `j`, with the change `c` computed by
+  /// `preview_remove_path_part(id, i, j)` on the current layout: the path is replaced by its parts before `i`
+  /// and after `j` (those with at least one edge), whose ids are returned in that order
+  std::vector<std::size_t> remove_path_part(std::size_t id, std::size_t i, std::size_t j, Patch_change c)
+  {
+    update();
+    const Path p = paths_.at(id);
+    remove_path(id);
+    std::vector<std::size_t> kept;
+    auto keep = [&](std::size_t a, std::size_t b) {
+      if(b <= a) return;
+      Path q;
+      q.is_feature = p.is_feature;
+      q.vertices.assign(p.vertices.begin() + std::ptrdiff_t(a), p.vertices.begin() + std::ptrdiff_t(b) + 1);
+      if(p.directions.size() + 1 == p.vertices.size())
+        q.directions.assign(p.directions.begin() + std::ptrdiff_t(a), p.directions.begin() + std::ptrdiff_t(b));
+      kept.push_back(add_path(std::move(q)));
+    };
+    keep(0, i);
+    keep(j, p.vertices.size() - 1);
+    apply(std::move(c));
+    return kept;
+  }
+
+  /// the number of paths through the edge `e`, feature paths included
+  int number_of_paths(edge_descriptor e) const { return edge_paths_[eindex_.at(e)]; }
+  /// whether a feature path passes through the edge `e`
+  bool is_on_feature_path(edge_descriptor e) const { return edge_features_[eindex_.at(e)] > 0; }
+
   /// ids of the paths in the layout, in insertion order
   std::vector<std::size_t> path_ids() const
   {

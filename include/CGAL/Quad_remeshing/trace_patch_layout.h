@@ -23,7 +23,9 @@
 #include <deque>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 /// fraction of the vertices used as seeds of the looped-paths round (`double`)
@@ -524,6 +526,8 @@ public:
   // by how far they leave the field. It is inserted only when it lowers the badness and leaves at most
   // one invalid patch, so the number of invalid patches never grows and repeated cuts end. Returns 1 if a
   // path was inserted.
+  std::size_t cuts_made = 0; // paths inserted by last_resort_cut() and kept
+
   std::size_t last_resort_cut(std::size_t p)
   {
     const Patch P = layout_.patch(p);
@@ -624,7 +628,153 @@ public:
     }
     if(!found) return 0;
     layout_.add_path(std::move(candidates[best_index]), std::move(best_change));
+    ++cuts_made;
     return 1;
+  }
+
+  // Merges an invalid patch with a neighbour by removing a part of a path on its boundary: a chain of
+  // boundary edges between two junctions (vertices with at least three cut edges; they keep two, so no
+  // path is left dangling), each edge on exactly one path and that path not a feature. A sliver between
+  // two close paths goes back into the patch on the other side of one of them, which the whole path could
+  // not do (it also bounds valid patches elsewhere). The removal must lower the number of invalid patches
+  // among the patches it merges; of those that do, the one leaving the fewest invalid patches is taken,
+  // then the lowest `badness()`, then the shortest part. If none does and `recut` is set, each part in
+  // turn is removed and the merged patch cut again by `last_resort_cut()` (the path is moved); that is
+  // kept if the number of invalid patches of the layout went down, and undone otherwise (the cuts removed,
+  // the part put back as a path of its own). Returns 1 if a part was removed.
+  struct Part { std::size_t id, i, j; }; // the vertices i..j of the path id
+  std::size_t merge_across_path_part(std::size_t p, bool recut)
+  {
+    const Patch P = layout_.patch(p);
+    if(layout_.validity(P) == Layout::SATISFIED) return 0;
+    auto cut_degree = [&](vertex_descriptor v) {
+      int n = 0;
+      for(halfedge_descriptor h : halfedges_around_target(v, tm_)) n += layout_.is_cut(edge(h, tm_));
+      return n;
+    };
+    auto removable = [&](halfedge_descriptor h) {
+      const auto e = edge(h, tm_);
+      return !is_border(e, tm_) && layout_.number_of_paths(e) == 1 && !layout_.is_on_feature_path(e);
+    };
+    // where each edge of a path that is not a feature is: path id and index of its first vertex
+    std::map<std::pair<vertex_descriptor, vertex_descriptor>, std::pair<std::size_t, std::size_t>> where;
+    auto locate = [&](halfedge_descriptor h) -> std::optional<std::pair<std::size_t, std::size_t>> {
+      if(where.empty())
+        for(std::size_t id : layout_.path_ids()) {
+          const Path& q = layout_.path(id);
+          if(q.is_feature) continue;
+          for(std::size_t i = 0; i + 1 < q.vertices.size(); ++i) where[{q.vertices[i], q.vertices[i + 1]}] = {id, i};
+        }
+      auto it = where.find({source(h, tm_), target(h, tm_)});
+      if(it != where.end()) return it->second;
+      return std::nullopt;
+    };
+    // the part of one path that a chain of halfedges is, if it is one
+    auto as_part = [&](const std::vector<halfedge_descriptor>& chain) -> std::optional<Part> {
+      const auto fw = locate(chain.front());
+      const auto bw = locate(opposite(chain.back(), tm_)); // the path may run against the loop
+      for(int side = 0; side < 2; ++side) {
+        const auto& at = side == 0 ? fw : bw;
+        if(!at) continue;
+        const bool forward = side == 0;
+        const Path& q = layout_.path(at->first);
+        const std::size_t i = at->second, j = i + chain.size();
+        if(j >= q.vertices.size()) continue;
+        bool same = true;
+        for(std::size_t k = 0; k < chain.size() && same; ++k) {
+          const halfedge_descriptor h = forward ? chain[k] : opposite(chain[chain.size() - 1 - k], tm_);
+          same = q.vertices[i + k] == source(h, tm_) && q.vertices[i + k + 1] == target(h, tm_);
+        }
+        if(same) return Part{at->first, i, j};
+      }
+      return std::nullopt;
+    };
+
+    // the chains of boundary edges between junctions whose edges could all be removed
+    std::vector<std::vector<halfedge_descriptor>> chains;
+    for(const auto& L : P.loops) {
+      std::size_t k0 = L.size();
+      for(std::size_t k = 0; k < L.size() && k0 == L.size(); ++k) if(cut_degree(source(L[k], tm_)) >= 3) k0 = k;
+      if(k0 == L.size()) continue;
+      std::vector<halfedge_descriptor> chain;
+      bool ok = true;
+      for(std::size_t n = 0; n < L.size(); ++n) {
+        const halfedge_descriptor h = L[(k0 + n) % L.size()];
+        chain.push_back(h);
+        ok = ok && removable(h);
+        if(cut_degree(target(h, tm_)) < 3) continue;
+        if(ok) chains.push_back(chain);
+        chain.clear();
+        ok = true;
+      }
+    }
+
+    // a removal that lowers the number of invalid patches by itself
+    bool found = false;
+    std::tuple<std::size_t, std::size_t, std::size_t> best{0, 0, 0};
+    Part best_part{0, 0, 0};
+    Patch_change best_change;
+    for(const auto& chain : chains) {
+      const auto part = as_part(chain);
+      if(!part) continue;
+      Patch_change change = layout_.preview_remove_path_part(part->id, part->i, part->j);
+      const Change_counts c = count(change);
+      if(c.invalid_after >= c.invalid_before) continue;
+      std::size_t bad = 0;
+      for(const Patch& N : change.new_patches) bad += badness(N);
+      const std::tuple<std::size_t, std::size_t, std::size_t> key{c.invalid_after, bad, part->j - part->i};
+      if(!found || key < best) {
+        found = true;
+        best = key;
+        best_part = *part;
+        best_change = std::move(change);
+      }
+    }
+    if(found) {
+      remove_part(best_part, std::move(best_change));
+      return 1;
+    }
+    if(!recut) return 0;
+
+    // else a removal followed by last-resort cuts of the merged patch (the path is moved): kept if the
+    // number of invalid patches goes down, undone otherwise
+    const face_descriptor f0 = P.faces.front();
+    for(const auto& chain : chains) {
+      where.clear(); // an undone removal leaves the path in three pieces
+      const auto part = as_part(chain);
+      if(!part) continue;
+      const std::size_t invalid_before = invalid_patches();
+      const std::size_t patches_before = layout_.number_of_patches();
+      Path removed;
+      const Path& q = layout_.path(part->id);
+      removed.vertices.assign(q.vertices.begin() + std::ptrdiff_t(part->i), q.vertices.begin() + std::ptrdiff_t(part->j) + 1);
+      if(q.directions.size() + 1 == q.vertices.size())
+        removed.directions.assign(q.directions.begin() + std::ptrdiff_t(part->i), q.directions.begin() + std::ptrdiff_t(part->j));
+      remove_part(*part, layout_.preview_remove_path_part(part->id, part->i, part->j));
+      const std::size_t last_id = layout_.path_ids().back(); // the cuts come after it
+      const std::size_t merged = layout_.patch_id(f0);
+      while(last_resort_cut(merged) > 0) {}
+      for(std::size_t k = patches_before - 1; k < layout_.number_of_patches(); ++k)
+        while(last_resort_cut(k) > 0) {}
+      if(invalid_patches() < invalid_before) return 1;
+      // undo: remove the cuts, put the part back
+      const std::vector<std::size_t> ids_after = layout_.path_ids();
+      for(auto it = ids_after.rbegin(); it != ids_after.rend() && *it > last_id; ++it) {
+        layout_.remove_path(*it, layout_.preview_remove_path(*it));
+        --cuts_made;
+      }
+      Patch_change back = layout_.preview_add_path(removed);
+      layout_.add_path(std::move(removed), std::move(back));
+    }
+    return 0;
+  }
+
+  // removes a part of a path, keeping the pieces left in the inserted paths
+  void remove_part(const Part& part, Patch_change change)
+  {
+    const std::vector<std::size_t> kept = layout_.remove_path_part(part.id, part.i, part.j, std::move(change));
+    auto it = std::find(inserted_.begin(), inserted_.end(), part.id);
+    if(it != inserted_.end()) { it = inserted_.erase(it); inserted_.insert(it, kept.begin(), kept.end()); }
   }
 
   // Dissolves inserted paths on the boundary of invalid patches when that lowers the number of invalid
@@ -717,7 +867,14 @@ private:
     convex) to another boundary vertex, which need not follow the field. The cut taken leaves the fewest
     invalid patches, then the smallest sum of left turns, twice the U-turns and missing or extra corners,
     and it must lower that sum and leave at most one invalid patch, so the number of invalid patches
-    never grows; a patch is cut again while a cut helps.
+    never grows; a patch is cut again while a cut helps;
+  - `path_part_removal`: an invalid patch is merged with a neighbour by removing a part of a path on its
+    boundary, between two junctions that keep at least two path edges each (so no path is left
+    dangling; feature paths are never touched), when that lowers the number of invalid patches; else a
+    part is removed and the merged patch cut again as above, kept only if the number of invalid patches
+    of the layout goes down. Slivers between two close paths, which no cut of their own improves, mostly
+    go this way. Then the last-resort cuts run again; repeated while the number of invalid patches falls
+    (at most `number_of_iterations` times).
 
   In every round the candidates are tried farthest-first (the next one is the one whose vertices are, on
   average, farthest from the paths already inserted, features included) and kept by one acceptance rule:
@@ -730,9 +887,10 @@ private:
   they separate, merged, are valid, and meet the quality conditions if one of them did.
 
   Not guaranteed: convexity and the number of sides of every patch. The last resort makes every patch a
-  disk; a disk patch that no cut improves (typically a sliver of a few triangles between close paths, or
-  two feature lines one triangle apart) is left non-convex or with fewer than 3 or more than 6 corners and
-  counted in the figures (the pipeline then chooses corners for it, see `quad_remesh()`).
+  disk; a disk patch that neither a cut nor a path-part removal improves (typically a sliver between two
+  close paths that both cross other paths there, or two feature lines one triangle apart) is left
+  non-convex or with fewer than 3 or more than 6 corners and counted in the figures (the pipeline then
+  chooses corners for it, see `quad_remesh()`).
 
   \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
   \tparam EdgeIsFeatureMap a readable property map, key `edge_descriptor`, value `bool`
@@ -896,6 +1054,22 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   run("last_resort_cuts", [&](Round& r) {
     for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
       while(tracer.last_resort_cut(p) > 0) ++r.paths;
+  }, false);
+  // then invalid patches are merged into a neighbour across a part of a path, and the merged patches cut
+  // again; every step lowers the number of invalid patches or keeps it, so a few passes end it
+  // (the round's `candidates` are the path parts removed, its `paths` the cuts kept)
+  run("path_part_removal", [&](Round& r) {
+    const std::size_t cuts_before = tracer.cuts_made;
+    for(unsigned pass = 0; pass < iterations; ++pass) {
+      const std::size_t before = tracer.invalid_patches();
+      std::size_t removed = 0;
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p) removed += tracer.merge_across_path_part(p, true);
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+        while(tracer.last_resort_cut(p) > 0) {}
+      r.candidates += removed;
+      if(removed == 0 || tracer.invalid_patches() >= before) break;
+    }
+    r.paths = tracer.cuts_made - cuts_before;
   }, false);
   stats.layout = layout.statistics();
   stats.seconds = total.time();
