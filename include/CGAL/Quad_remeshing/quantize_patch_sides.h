@@ -28,6 +28,7 @@
 #include <vector>
 
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(isometry_weight_t, isometry_weight, isometry_weight)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(under_subdivision_weight_t, under_subdivision_weight, under_subdivision_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(quad_regularity_weight_t, quad_regularity_weight, quad_regularity_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(polygon_regularity_weight_t, polygon_regularity_weight, polygon_regularity_weight)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(alignment_weight_t, alignment_weight, alignment_weight)
@@ -46,7 +47,7 @@ struct Side_quantization_statistics
   std::size_t clusters = 0;            ///< number of clusters solved separately
   std::size_t variables = 0;           ///< program variables, summed over clusters
   std::size_t constraints = 0;         ///< program constraints, summed over clusters
-  double isometry = 0;                 ///< sum over arcs of (s - target)^2
+  double isometry = 0;                 ///< sum over arcs of (s - target)^2, `under_subdivision_weight` times larger where s < target
   double quad_regularity = 0;          ///< sum over quads of |e0 - e2| + |e1 - e3|
   double polygon_regularity = 0;       ///< sum over 3/5/6-gons of the violations of Tarini's inequalities / n (+ hexagon parity)
   double alignment = 0;                ///< sum over the facing side pairs kept by the second solve of (|up - down'| + |down - up'|) / 2
@@ -148,8 +149,7 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
   for(const Alignment_pair& ap : all_pairs) if(alignment_violation(v, ap, s) == 0) ++st.aligned_pairs;
   for(std::size_t a = 0; a < pb.arcs.size(); ++a) {
     if(v.problem->arcs[a].fixed > 0 || v.arc_patches[a].empty()) continue;
-    const double d = s[a] - pb.arcs[a].target;
-    st.isometry += d * d;
+    st.isometry += isometry_cost(s[a], pb.arcs[a].target, w);
   }
   for(std::size_t p = 0; p < pb.patches.size(); ++p) {
     if(perimeter(v, p, s) % 2 != 0) ++st.odd_perimeters;
@@ -170,13 +170,14 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
 
   Solves, per cluster of patches, the mixed-integer program: one integer `s >= max(1, minimum)` per arc; every
   patch perimeter even and at least 4 (hard); minimise
-  `w_iso * sum (s - target)^2` (exact at integers through secant cuts, within a window of at least
-  3 around the target)
+  `w_iso * sum c (s - target)^2`, with `c = w_under` (`under_subdivision_weight`, 4 by default) where
+  `s < target` and 1 otherwise (exact at integers through secant cuts, within a window of at least 3
+  around the target)
   `+ w_quad * sum_quads (|e0 - e2| + |e1 - e3|)`
   `+ w_poly * sum_{3,5,6-gons} (1/n) sum_i max(0, 2 - L_i(e))` where `L_i(e) >= 2` are Tarini's
   inequalities (every separatrix at least one edge; paper Eq. 1), plus, for hexagons, a penalty when
-  `e0 + e2 + e4` is odd. Arcs between clusters are first fixed to the even number nearest to their
-  target (at least their minimum). A cluster whose solve ends with no trusted solution (node or time limit before any incumbent,
+  `e0 + e2 + e4` is odd. Arcs between clusters are first fixed to the one of the two even numbers
+  around their target (at least 2 and their minimum) with the lower isometry term. A cluster whose solve ends with no trusted solution (node or time limit before any incumbent,
   solver error, no GLPK) takes its values from a solver-free fallback. The fallback works on *strips*:
   arcs that are opposite single-arc sides of 4-sided patches, chained; every strip takes the rounded
   mean of its targets (so the quads it crosses are regular), then odd patches are paired along
@@ -223,6 +224,17 @@ inline void evaluate(const Quantization_view& v, const std::vector<int>& s, cons
       \cgalParamDescription{weight of the squared deviation from the targets}
       \cgalParamType{`double`}
       \cgalParamDefault{1}
+    \cgalParamNEnd
+    \cgalParamNBegin{under_subdivision_weight}
+      \cgalParamDescription{factor (at least 1) of the isometry term of an arc given fewer edges than its target:
+                            too few edges stretch the quads across the arc and cut corners off the surface,
+                            too many only make the quads smaller. At 1 (the paper's symmetric term), the
+                            quantization of fertility put one quad where the targets asked for 3 to 4 on a few
+                            arcs (a strip of quads 5 times longer than wide, 2.6% of the diagonal away from the
+                            input); 4 brought it back to 1.3%, with about 7% more quads over the 22
+                            development meshes}
+      \cgalParamType{`double`}
+      \cgalParamDefault{4}
     \cgalParamNEnd
     \cgalParamNBegin{quad_regularity_weight}
       \cgalParamDescription{weight of the opposite-side differences of 4-sided patches}
@@ -296,6 +308,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
 
   internal::Quantization_weights w;
   w.isometry = choose_parameter(get_parameter(np, internal_np::isometry_weight), 1.);
+  w.under_subdivision = choose_parameter(get_parameter(np, internal_np::under_subdivision_weight), 4.);
   w.regularity_quads = choose_parameter(get_parameter(np, internal_np::quad_regularity_weight), 99.);
   w.regularity_others = choose_parameter(get_parameter(np, internal_np::polygon_regularity_weight), 91.);
   w.alignment = choose_parameter(get_parameter(np, internal_np::alignment_weight), 9.);
@@ -312,6 +325,7 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   const unsigned threads = (std::max)(1u, static_cast<unsigned>(
                              choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u)));
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  if(!(w.under_subdivision >= 1)) throw std::invalid_argument("quantize_patch_sides: under_subdivision_weight must be >= 1");
   if(!(w.isometry >= 0) || !(w.regularity_quads >= 0) || !(w.regularity_others >= 0) || !(w.alignment >= 0))
     throw std::invalid_argument("quantize_patch_sides: weights must be >= 0");
   if(max_cluster == 0) throw std::invalid_argument("quantize_patch_sides: maximum_cluster_size must be > 0");
@@ -326,12 +340,17 @@ quantize_patch_sides(const Side_quantization_problem& problem,
   std::vector<std::size_t> cluster_of(problem.patches.size());
   for(std::size_t c = 0; c < clusters.size(); ++c) for(std::size_t p : clusters[c]) cluster_of[p] = c;
   if(clusters.size() > 1) {
-    // Even values on arcs between clusters keep each cluster's parity problem independent and solvable.
+    // Even values on arcs between clusters keep each cluster's parity problem independent and solvable:
+    // of the two even values around the target (at least 2 and the arc's minimum), the one of lower
+    // isometry cost (too few edges cost more, so a target of 2.9 takes 4, not 2).
     for(std::size_t a = 0; a < problem.arcs.size(); ++a) {
       const auto& inc = v.arc_patches[a];
-      if(v.fixed[a] == 0 && inc.size() == 2 && cluster_of[inc[0]] != cluster_of[inc[1]])
-        v.fixed[a] = (std::max)((problem.arcs[a].minimum + 1) / 2 * 2,
-                                (std::max)(2, 2 * static_cast<int>(std::lround(problem.arcs[a].target / 2.))));
+      if(v.fixed[a] == 0 && inc.size() == 2 && cluster_of[inc[0]] != cluster_of[inc[1]]) {
+        const double t = problem.arcs[a].target;
+        const int low = (std::max)((problem.arcs[a].minimum + 1) / 2 * 2,
+                                   (std::max)(2, 2 * static_cast<int>(std::floor(t / 2.))));
+        v.fixed[a] = internal::isometry_cost(low + 2, t, w) < internal::isometry_cost(low, t, w) ? low + 2 : low;
+      }
     }
   }
   // Facing sides of non-quad patches; a pair is modelled in the program of a cluster holding both.

@@ -57,8 +57,7 @@ inline double improve_strip_cycles(const Quantization_view& v, std::vector<int>&
     std::vector<std::size_t> ps, ks;
     for(std::size_t r : rs)
       for(std::size_t a : members[r]) {
-        const double d = s[a] - pb.arcs[a].target;
-        c += w.isometry * d * d;
+        c += w.isometry * isometry_cost(s[a], pb.arcs[a].target, w);
         for(std::size_t p : v.arc_patches[a]) if(!patch_mark[p]) { patch_mark[p] = 1; ps.push_back(p); }
       }
     for(std::size_t p : ps) {
@@ -144,7 +143,7 @@ inline double improve_locally(const Quantization_view& v, std::vector<int>& s, c
   std::vector<int> lo(na), hi(na);
   for(std::size_t a = 0; a < na; ++a) arc_window(pb.arcs[a], lo[a], hi[a]);
   auto allowed = [&](std::size_t a, int x) { return x >= lo[a] && x <= hi[a]; };
-  auto iso = [&](std::size_t a, int x) { const double d = x - pb.arcs[a].target; return w.isometry * d * d; };
+  auto iso = [&](std::size_t a, int x) { return w.isometry * isometry_cost(x, pb.arcs[a].target, w); };
 
   std::vector<char> in_move(na, 0), touched(np, 0);
   std::vector<std::size_t> arcs, patches;

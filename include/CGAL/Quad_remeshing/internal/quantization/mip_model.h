@@ -14,7 +14,20 @@ namespace CGAL {
 namespace Quad_remeshing {
 namespace internal {
 
-struct Quantization_weights { double isometry = 1, regularity_quads = 99, regularity_others = 91, alignment = 9; };
+struct Quantization_weights
+{
+  double isometry = 1, regularity_quads = 99, regularity_others = 91, alignment = 9;
+  double under_subdivision = 4; // factor of the isometry term of an arc with fewer edges than its target
+};
+
+// The isometry term of an arc of `x` edges whose target is `t`, before the isometry weight: the squared
+// deviation, `w.under_subdivision` times larger below the target. Too few edges stretch the quads across
+// the arc and cut corners off the surface; too many only make them smaller. Convex in `x` for a factor >= 1.
+inline double isometry_cost(double x, double t, const Quantization_weights& w)
+{
+  const double d = x - t;
+  return d < 0 ? w.under_subdivision * d * d : d * d;
+}
 
 struct Cluster_result
 {
@@ -78,11 +91,11 @@ Cluster_result solve_cluster(const Quantization_view& v, const std::vector<std::
     const int s0 = s[kv.first];
     if(s0 < lo || s0 > hi) x0_valid = false;
     start(kv.second, s0);
-    start(epi, (s0 - t) * (s0 - t));
+    start(epi, isometry_cost(s0, t, w));
     obj->add_coefficient(epi, w.isometry);
     for(int j = lo; j < hi; ++j) {
-      // epi >= f(j) + m (s - j), m = f(j+1) - f(j), f(x) = (x - t)^2
-      const double fj = (j - t) * (j - t), m = 2. * (j - t) + 1.;
+      // epi >= f(j) + m (s - j), m = f(j+1) - f(j), f = isometry_cost(., t, w) (convex: its chords bound it)
+      const double fj = isometry_cost(j, t, w), m = isometry_cost(j + 1, t, w) - fj;
       Constraint* c = mip.create_constraint(fj - m * j, Variable::infinity());
       c->add_coefficient(epi, 1.);
       c->add_coefficient(kv.second, -m);
