@@ -751,7 +751,8 @@ public:
       if(q.directions.size() + 1 == q.vertices.size())
         removed.directions.assign(q.directions.begin() + std::ptrdiff_t(part->i), q.directions.begin() + std::ptrdiff_t(part->j));
       remove_part(*part, layout_.preview_remove_path_part(part->id, part->i, part->j));
-      const std::size_t last_id = layout_.path_ids().back(); // the cuts come after it
+      // the cuts only add paths, after these (ids grow with insertion)
+      const std::size_t paths_after_removal = layout_.path_ids().size();
       const std::size_t merged = layout_.patch_id(f0);
       while(last_resort_cut(merged) > 0) {}
       for(std::size_t k = patches_before - 1; k < layout_.number_of_patches(); ++k)
@@ -759,8 +760,8 @@ public:
       if(invalid_patches() < invalid_before) return 1;
       // undo: remove the cuts, put the part back
       const std::vector<std::size_t> ids_after = layout_.path_ids();
-      for(auto it = ids_after.rbegin(); it != ids_after.rend() && *it > last_id; ++it) {
-        layout_.remove_path(*it, layout_.preview_remove_path(*it));
+      for(std::size_t k = ids_after.size(); k > paths_after_removal; --k) {
+        layout_.remove_path(ids_after[k - 1], layout_.preview_remove_path(ids_after[k - 1]));
         --cuts_made;
       }
       Patch_change back = layout_.preview_add_path(removed);
