@@ -703,6 +703,8 @@ public:
         chain.push_back(h);
         ok = ok && removable(h);
         if(cut_degree(target(h, tm_)) < 3) continue;
+        // a chain from a junction back to itself takes two of its cut edges
+        if(target(h, tm_) == source(chain.front(), tm_) && cut_degree(target(h, tm_)) < 4) ok = false;
         if(ok) chains.push_back(chain);
         chain.clear();
         ok = true;
