@@ -872,8 +872,8 @@ private:
     and it must lower that sum and leave at most one invalid patch, so the number of invalid patches
     never grows; a patch is cut again while a cut helps;
   - `path_part_removal`: an invalid patch is merged with a neighbour by removing a part of a path on its
-    boundary, between two junctions that keep at least two path edges each (so no path is left
-    dangling; feature paths are never touched), when that lowers the number of invalid patches; else a
+    boundary, between two junctions that keep at least two cut edges each (path or border edges, so no
+    path is left dangling; feature paths are never touched), when that lowers the number of invalid patches; else a
     part is removed and the merged patch cut again as above, kept only if the number of invalid patches
     of the layout goes down. Slivers between two close paths, which no cut of their own improves, mostly
     go this way. Then the last-resort cuts run again; repeated while the number of invalid patches falls
