@@ -381,26 +381,32 @@ public:
                    paths_[id].is_feature);
   }
 
+  /// the part of the path `id` from its vertex `i` to its vertex `j` (`i <= j`), with the directions of its edges
+  Path path_part(std::size_t id, std::size_t i, std::size_t j) const
+  {
+    const Path& p = paths_.at(id);
+    Path q;
+    q.is_feature = p.is_feature;
+    q.vertices.assign(p.vertices.begin() + std::ptrdiff_t(i), p.vertices.begin() + std::ptrdiff_t(j) + 1);
+    if(p.directions.size() + 1 == p.vertices.size())
+      q.directions.assign(p.directions.begin() + std::ptrdiff_t(i), p.directions.begin() + std::ptrdiff_t(j));
+    return q;
+  }
+
   /// removes the edges of the path `id` from its vertex `i` to its vertex `j`, with the change `c` computed by
   /// `preview_remove_path_part(id, i, j)` on the current layout: the path is replaced by its parts before `i`
   /// and after `j` (those with at least one edge), whose ids are returned in that order
   std::vector<std::size_t> remove_path_part(std::size_t id, std::size_t i, std::size_t j, Patch_change c)
   {
     update();
-    const Path p = paths_.at(id);
+    const std::size_t last = paths_.at(id).vertices.size() - 1;
+    // copies of the pieces, taken before adding any path (an addition may reallocate the path list)
+    std::vector<Path> pieces;
+    if(i > 0) pieces.push_back(path_part(id, 0, i));
+    if(j < last) pieces.push_back(path_part(id, j, last));
     remove_path(id);
     std::vector<std::size_t> kept;
-    auto keep = [&](std::size_t a, std::size_t b) {
-      if(b <= a) return;
-      Path q;
-      q.is_feature = p.is_feature;
-      q.vertices.assign(p.vertices.begin() + std::ptrdiff_t(a), p.vertices.begin() + std::ptrdiff_t(b) + 1);
-      if(p.directions.size() + 1 == p.vertices.size())
-        q.directions.assign(p.directions.begin() + std::ptrdiff_t(a), p.directions.begin() + std::ptrdiff_t(b));
-      kept.push_back(add_path(std::move(q)));
-    };
-    keep(0, i);
-    keep(j, p.vertices.size() - 1);
+    for(Path& q : pieces) kept.push_back(add_path(std::move(q)));
     apply(std::move(c));
     return kept;
   }

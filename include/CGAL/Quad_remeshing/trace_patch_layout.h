@@ -516,6 +516,8 @@ public:
     return b + (c < 3 ? 3 - c : (c > 6 ? c - 6 : 0));
   }
 
+  std::size_t cuts_made = 0; // paths inserted by last_resort_cut() and kept
+
   // Cuts a disk patch that is not convex or has fewer than 3 or more than 6 corners along a shortest edge
   // path through its interior (Euclidean lengths; interior vertices and edges of the patch only) between
   // two of its boundary vertices, which need not follow the field. The path starts at a left turn or
@@ -526,8 +528,6 @@ public:
   // by how far they leave the field. It is inserted only when it lowers the badness and leaves at most
   // one invalid patch, so the number of invalid patches never grows and repeated cuts end. Returns 1 if a
   // path was inserted.
-  std::size_t cuts_made = 0; // paths inserted by last_resort_cut() and kept
-
   std::size_t last_resort_cut(std::size_t p)
   {
     const Patch P = layout_.patch(p);
@@ -747,11 +747,7 @@ public:
       if(!part) continue;
       const std::size_t invalid_before = invalid_patches();
       const std::size_t patches_before = layout_.number_of_patches();
-      Path removed;
-      const Path& q = layout_.path(part->id);
-      removed.vertices.assign(q.vertices.begin() + std::ptrdiff_t(part->i), q.vertices.begin() + std::ptrdiff_t(part->j) + 1);
-      if(q.directions.size() + 1 == q.vertices.size())
-        removed.directions.assign(q.directions.begin() + std::ptrdiff_t(part->i), q.directions.begin() + std::ptrdiff_t(part->j));
+      Path removed = layout_.path_part(part->id, part->i, part->j);
       remove_part(*part, layout_.preview_remove_path_part(part->id, part->i, part->j));
       // the cuts only add paths, after these (ids grow with insertion)
       const std::size_t paths_after_removal = layout_.path_ids().size();
@@ -1055,8 +1051,10 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   // patches), so one pass over the growing list tries every patch until no cut helps it; every cut lowers
   // the badness, so the pass ends.
   run("last_resort_cuts", [&](Round& r) {
+    const std::size_t cuts_before = tracer.cuts_made;
     for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
-      while(tracer.last_resort_cut(p) > 0) ++r.paths;
+      while(tracer.last_resort_cut(p) > 0) {}
+    r.paths = tracer.cuts_made - cuts_before;
   }, false);
   // then invalid patches are merged into a neighbour across a part of a path, and the merged patches cut
   // again; every step lowers the number of invalid patches or keeps it, so a few passes end it
