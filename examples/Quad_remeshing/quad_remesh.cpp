@@ -62,7 +62,7 @@ bool stage_available(const std::string& name)
 const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
   "                   [--sizing-tolerance F] [--feature-tolerance F] [--surface-tolerance F]\n"
-  "                   [--feature-angle DEG]\n"
+  "                   [--feature-angle DEG] [--feature-gap-angle DEG]\n"
   "                   [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
@@ -83,6 +83,9 @@ const char* usage_text =
   "  --surface-tolerance F quad edges across a bend of the surface (a fillet) stay within F times the\n"
   "                       bounding-box diagonal along the normal (default 0: no bound; e.g. 0.002)\n"
   "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
+  "  --feature-gap-angle DEG  dihedral angle above which a few edges continuing a feature line\n"
+  "                       across a gap, to another feature edge, are features too (default: the\n"
+  "                       feature angle minus 10; the feature angle or more: no gap is closed)\n"
   "  --features FILE      use these feature edges instead of detecting them (CGAL .polylines.txt\n"
   "                       or one 'i j' vertex-index pair per line)\n"
   "  --until STAGE        stop after STAGE and write its mesh as OUTPUT; stages, in order:\n"
@@ -113,7 +116,8 @@ struct Usage_error : std::runtime_error
 struct Options
 {
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
-  double edge_length = 0., scale = 1., feature_angle = 35., time_limit = 0., sizing_tolerance = 0.,
+  double edge_length = 0., scale = 1., feature_angle = 35., feature_gap_angle = -1., time_limit = 0.,
+         sizing_tolerance = 0.,
          feature_tolerance = QR::internal::default_feature_tolerance, surface_tolerance = 0.;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
@@ -153,6 +157,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--faces") { o.faces = long(parse_number(a, value(), 1.)); ++density_options; }
     else if(a == "--scale") { o.scale = parse_number(a, value(), 1e-6); ++density_options; }
     else if(a == "--feature-angle") o.feature_angle = parse_number(a, value(), 0.);
+    else if(a == "--feature-gap-angle") o.feature_gap_angle = parse_number(a, value(), 0.);
     else if(a == "--features") o.features_file = value();
     else if(a == "--until")
     {
@@ -344,6 +349,7 @@ private:
     const QR::Feature_detection_statistics st = QR::detect_feature_edges(
       state_.tmesh, state_.feature,
       QRP::combine(QRP::feature_angle(opt_.feature_angle).verbose(opt_.verbose), QRP::use_given_feature_edges(given),
+                   QRP::feature_gap_angle(opt_.feature_gap_angle < 0. ? opt_.feature_angle - 10. : opt_.feature_gap_angle),
                    QRP::vertex_is_feature_corner_map(state_.corner)));
     if(!opt_.dump_dir.empty())
     {

@@ -8,6 +8,7 @@
 
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
+#include <CGAL/Quad_remeshing/internal/features/bridge_feature_gaps.h>
 #include <CGAL/Quad_remeshing/internal/features/feature_graph.h>
 
 #include <CGAL/Real_timer.h>
@@ -28,6 +29,8 @@
 
 /// number of erosion steps followed by as many dilation steps that remove short feature chains (`unsigned`)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_erode_dilate_steps_t, feature_erode_dilate_steps, feature_erode_dilate_steps)
+/// dihedral angle in degrees above which an edge can close a gap in a feature line (`double`)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_gap_angle_t, feature_gap_angle, feature_gap_angle)
 /// vertex property map: `true` on feature corners
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(vertex_is_feature_corner_map_t, vertex_is_feature_corner_map, vertex_is_feature_corner_map)
 /// turning angle in degrees between consecutive feature edges above which a vertex is a corner (`double`)
@@ -46,6 +49,7 @@ struct Feature_detection_statistics
 {
   std::size_t sharp_edges = 0;    ///< non-border edges over the dihedral threshold, before erode/dilate
   std::size_t cap_edges = 0;      ///< sharp edges dropped because they close a cap on the border whose three edges are features
+  std::size_t gap_edges = 0;      ///< edges under the dihedral threshold made features to close gaps in feature lines
   std::size_t feature_edges = 0;  ///< feature edges in the result (border edges included)
   std::size_t feature_lines = 0;  ///< chains of feature edges between corners (closed loops count once)
   std::size_t corners = 0;        ///< feature corners
@@ -56,6 +60,7 @@ struct Feature_detection_statistics
   {
     Report r = Report::object();
     r["sharp_edges"] = sharp_edges;
+    r["gap_edges"] = gap_edges;
     r["cap_edges"] = cap_edges;
     r["feature_edges"] = feature_edges;
     r["feature_lines"] = feature_lines;
@@ -70,7 +75,12 @@ struct Feature_detection_statistics
   Marks the feature edges of a triangle mesh and, optionally, its feature corners.
 
   An edge is a feature if it is a border edge, or if the angle between the normals of its two faces
-  exceeds `feature_angle`. Then `feature_erode_dilate_steps` erosion steps remove the free ends of
+  exceeds `feature_angle`. A crease whose dihedral angles waver around the threshold (a coarse fillet, an
+  unevenly tessellated rim) then comes out as short pieces; to join them, from every free end of a feature
+  chain the cheapest path of at most `feature_erode_dilate_steps` edges whose dihedral angles exceed
+  `feature_gap_angle`, each heading within 45 degrees of the end edge's direction, that reaches another
+  feature edge becomes feature too (an edge costs its length times `1 + (feature_angle - angle) /
+  feature_angle`). Then `feature_erode_dilate_steps` erosion steps remove the free ends of
   feature chains (never an edge incident to a vertex where more than two feature edges meet, never a
   border edge), and as many dilation steps grow the survivors back along the removed edges: chains of
   at most about twice that many edges that touch no other feature vanish, the others are restored.
@@ -101,8 +111,15 @@ struct Feature_detection_statistics
       \cgalParamType{`double`}
       \cgalParamDefault{35}
     \cgalParamNEnd
+    \cgalParamNBegin{feature_gap_angle}
+      \cgalParamDescription{dihedral angle in degrees above which an edge can close a gap in a feature line;
+                            `feature_angle` or more closes no gap}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`feature_angle - 10`}
+    \cgalParamNEnd
     \cgalParamNBegin{feature_erode_dilate_steps}
-      \cgalParamDescription{number of erosion steps, followed by as many dilation steps}
+      \cgalParamDescription{number of erosion steps, followed by as many dilation steps; also the longest
+                            gap, in edges, that `feature_gap_angle` closes}
       \cgalParamType{`unsigned`}
       \cgalParamDefault{4}
     \cgalParamNEnd
@@ -167,6 +184,7 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
                                     get_const_property_map(CGAL::vertex_point, tmesh));
   const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
   const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
+  const double gap_angle = choose_parameter(get_parameter(np, internal_np::feature_gap_angle), angle - 10.);
   const unsigned steps = choose_parameter(get_parameter(np, internal_np::feature_erode_dilate_steps), 4u);
   const double corner_angle = choose_parameter(get_parameter(np, internal_np::feature_corner_angle), 45.);
   const bool given = choose_parameter(get_parameter(np, internal_np::use_given_feature_edges), false);
@@ -192,9 +210,11 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
   {
     // the sharp edges: dilation only grows back what erosion removed
     std::vector<edge_descriptor> candidates;
+    auto dihedral = get(CGAL::dynamic_edge_property_t<double>(), tmesh);
     for(edge_descriptor e : edges(tmesh))
     {
       bool sharp = false;
+      put(dihedral, e, 0.);
       if(is_border(e, tmesh))
         sharp = true;
       else if(angle < 180.)
@@ -204,7 +224,11 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
         const double l = std::sqrt(CGAL::to_double(n1 * n1) * CGAL::to_double(n2 * n2));
         // a degenerate face has no normal: no edge is declared sharp from it
         if(l > 0.)
-          sharp = CGAL::to_double(n1 * n2) / l < cos_thr;
+        {
+          const double c = CGAL::to_double(n1 * n2) / l;
+          sharp = c < cos_thr;
+          put(dihedral, e, std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI);
+        }
       }
       put(edge_is_feature_map, e, sharp);
       if(sharp && !is_border(e, tmesh))
@@ -257,6 +281,14 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
       }
     }
 
+    if(angle < 180. && steps > 0 && !candidates.empty())
+    {
+      const std::vector<edge_descriptor> gaps = internal::bridge_feature_gaps(
+        tmesh, edge_is_feature_map, vpm, [&](edge_descriptor e) { return get(dihedral, e); }, gap_angle, angle, steps);
+      stats.gap_edges = gaps.size();
+      candidates.insert(candidates.end(), gaps.begin(), gaps.end());
+    }
+
     if(steps > 0 && !candidates.empty())
     {
       auto degree = [&](vertex_descriptor v) { return internal::feature_degree(v, tmesh, edge_is_feature_map); };
@@ -306,7 +338,8 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
 
   stats.seconds = timer.time();
   if(verbose)
-    std::cerr << "[features] " << stats.feature_edges << " feature edges, " << stats.feature_lines
+    std::cerr << "[features] " << stats.feature_edges << " feature edges (" << stats.gap_edges
+              << " closing gaps), " << stats.feature_lines
               << " lines, " << stats.corners << " corners (" << stats.seconds << " s)" << std::endl;
   return stats;
 }

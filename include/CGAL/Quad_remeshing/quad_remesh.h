@@ -108,6 +108,12 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`35`}
     \cgalParamNEnd
+    \cgalParamNBegin{feature_gap_angle}
+      \cgalParamDescription{the dihedral angle in degrees above which an edge can close a gap in a feature
+                            line (see `detect_feature_edges()`)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`feature_angle - 10`}
+    \cgalParamNEnd
     \cgalParamNBegin{maximum_running_time}
       \cgalParamDescription{a time limit in seconds for the whole run. The stages that can stop early get a
                             share of the time left when they start: the layout rounds (fewer paths: patches
@@ -151,6 +157,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const std::function<void(const std::string&)> no_callback = [](const std::string&) {};
   const auto progress = choose_parameter(get_parameter(np, CGAL::internal_np::callback), no_callback);
   const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
+  const double gap_angle = choose_parameter(get_parameter(np, internal_np::feature_gap_angle), angle - 10.);
   const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
   internal::Time_budget budget(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
 
@@ -160,7 +167,8 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
 
   progress("features");
   report["features"] = detect_feature_edges(tm, feature,
-    QRP::combine(QRP::feature_angle(angle).verbose(verbose), QRP::vertex_is_feature_corner_map(corner))).report();
+    QRP::combine(QRP::feature_angle(angle).verbose(verbose), QRP::feature_gap_angle(gap_angle),
+                 QRP::vertex_is_feature_corner_map(corner))).report();
 
   progress("remesh");
   const double length = choose_parameter(get_parameter(np, internal_np::quad_edge_length), default_quad_edge_length(tm));
