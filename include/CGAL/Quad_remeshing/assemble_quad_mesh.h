@@ -81,6 +81,7 @@ struct Quad_assembly_statistics
   std::size_t feature_edges = 0;   ///< quad edges on feature arcs
   std::size_t folded_quads = 0;    ///< quads of the patterns left out because they fold onto themselves at the tip of a slit
   std::size_t merged_quads = 0;    ///< pairs of quads merged into one around an inner vertex with two edges
+  std::size_t closed_quads = 0;    ///< quads left out in pairs on the same four vertices, facing each other (a slit folded shut)
   double seconds = 0.;             ///< time spent
 
   /// the figures as a report record
@@ -93,6 +94,7 @@ struct Quad_assembly_statistics
     r["feature_edges"] = feature_edges;
     r["folded_quads"] = folded_quads;
     r["merged_quads"] = merged_quads;
+    r["closed_quads"] = closed_quads;
     r["seconds"] = seconds;
     return r;
   }
@@ -114,10 +116,12 @@ struct Quad_assembly_statistics
   triangles on the two sides of such an arc get separate copies of its vertices, so that the patch is
   a disk with a simple boundary and the map does not fold.
 
-  Two repairs keep the result a manifold quad mesh where a pattern meets a slit: a pattern quad that
-  folds onto itself over the tip of a slit (its opposite corners are one vertex) is left out, and the
-  two quads around an inner vertex with only two edges (two flat corners) are merged into one. Both
-  are counted in the statistics.
+  Three repairs keep the result a manifold quad mesh where a pattern meets a slit: a pattern quad that
+  folds onto itself over the tip of a slit (its opposite corners are one vertex) is left out; two
+  quads then left on the same four vertices in opposite orientations (a pattern with two rows of
+  quads across the slit's end, which would close a sphere) are both left out; and the two quads
+  around an inner vertex with only two edges (two flat corners) are merged into one. Each shortens
+  the slit, and all are counted in the statistics.
 
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
   @tparam PatchQuadrangulation a class with the members `positions` (a random-access range of
@@ -321,6 +325,49 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     ++stats.patches;
   }
 
+  // removes the quads marked in `gone`
+  auto drop_quads = [&](const std::vector<bool>& gone) {
+    std::vector<std::array<q_index, 4>> kept;
+    std::vector<std::size_t> kept_patch;
+    for(std::size_t k = 0; k < quads.size(); ++k)
+      if(!gone[k])
+      {
+        kept.push_back(quads[k]);
+        kept_patch.push_back(quad_patch[k]);
+      }
+    quads.swap(kept);
+    quad_patch.swap(kept_patch);
+  };
+
+  // Where a pattern puts two rows of quads across the end of a slit, leaving out the folded quads
+  // leaves two quads on the same four vertices, in opposite orientations: glued along all four edges
+  // they would close a sphere, so both go (the slit then ends one quad edge earlier).
+  {
+    std::map<std::array<q_index, 4>, std::size_t> seen;
+    std::vector<bool> gone(quads.size(), false);
+    for(std::size_t k = 0; k < quads.size(); ++k)
+    {
+      std::array<q_index, 4> key = quads[k];
+      std::sort(key.begin(), key.end());
+      const auto ins = seen.emplace(key, k);
+      if(ins.second) continue;
+      const std::size_t other = ins.first->second;
+      if(gone[other]) { ins.first->second = k; continue; }
+      // opposite orientations: quads[k] read backwards is a rotation of quads[other]
+      bool facing = false;
+      for(int r = 0; r < 4 && !facing; ++r)
+      {
+        facing = true;
+        for(int i = 0; i < 4; ++i)
+          facing = facing && quads[k][std::size_t(i)] == quads[other][std::size_t((r + 4 - i) % 4)];
+      }
+      if(!facing) continue;
+      gone[k] = gone[other] = true;
+      stats.closed_quads += 2;
+    }
+    drop_quads(gone);
+  }
+
   // A vertex inside the mesh with only two quads, which share both its edges (the tip of a slit
   // whose pattern has no inner edge there), has two flat corners: the two quads become one (at the
   // tip of a feature slit, this shortens the feature line by one quad edge; flat corners would be
@@ -359,16 +406,7 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
       ++stats.merged_quads;
       for(q_index w : {a, b, x, y}) work.push_back(w);
     }
-    std::vector<std::array<q_index, 4>> kept;
-    std::vector<std::size_t> kept_patch;
-    for(std::size_t k = 0; k < quads.size(); ++k)
-      if(!gone[k])
-      {
-        kept.push_back(quads[k]);
-        kept_patch.push_back(quad_patch[k]);
-      }
-    quads.swap(kept);
-    quad_patch.swap(kept_patch);
+    drop_quads(gone);
   }
 
   // Says why a quad cannot be added, naming the patches involved (only called on failure).
@@ -419,7 +457,8 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
   if(verbose)
     std::cerr << "[assemble] " << stats.patches << " patches -> " << stats.vertices << " vertices, " << stats.faces
               << " quads, " << stats.feature_edges << " feature edges, " << stats.folded_quads << " folded quads left out, "
-              << stats.merged_quads << " pairs merged (" << stats.seconds << " s)\n";
+              << stats.merged_quads << " pairs merged, " << stats.closed_quads << " quads closing a slit left out ("
+              << stats.seconds << " s)\n";
   return stats;
 }
 
