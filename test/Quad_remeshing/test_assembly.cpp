@@ -118,6 +118,57 @@ struct Box
   }
 };
 
+// A flat nx x ny grid of cells of side 0.5 in the plane z = 0, split into triangles, as one patch
+// (its sides are left to the test) with helpers to add arcs.
+struct Flat_grid
+{
+  Mesh mesh;
+  std::vector<V> g;
+  int nx;
+  QR::Patch_layout_description<Mesh> layout;
+  QR::Patch_layout_description<Mesh>::Patch patch;
+
+  Flat_grid(int nx_, int ny) : nx(nx_)
+  {
+    for(int j = 0; j <= ny; ++j)
+      for(int i = 0; i <= nx; ++i) g.push_back(mesh.add_vertex(Point_3(0.5 * i, 0.5 * j, 0.)));
+    for(int j = 0; j < ny; ++j)
+      for(int i = 0; i < nx; ++i)
+      {
+        patch.faces.push_back(mesh.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1)));
+        patch.faces.push_back(mesh.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1)));
+      }
+  }
+  V id(int i, int j) const { return g[std::size_t(j * (nx + 1) + i)]; }
+  std::size_t add_arc(const std::vector<V>& chain)
+  {
+    QR::Patch_layout_description<Mesh>::Arc arc;
+    arc.vertices = chain;
+    arc.on_feature = true;
+    layout.arcs.push_back(arc);
+    return layout.arcs.size() - 1;
+  }
+};
+
+// Flat_grid(8, 4) with the arcs of a slit up from (4,0) to (4,2) and of the border: bottom left of
+// the slit, bottom right, right, top, left, each counterclockwise.
+struct Slit_grid : Flat_grid
+{
+  std::size_t a_bl, a_slit, a_br, a_r, a_t, a_l;
+  Slit_grid() : Flat_grid(8, 4)
+  {
+    std::vector<V> bottom_left, slit, bottom_right, right, top, left;
+    for(int i = 0; i <= 4; ++i) bottom_left.push_back(id(i, 0));
+    for(int j = 0; j <= 2; ++j) slit.push_back(id(4, j));
+    for(int i = 4; i <= 8; ++i) bottom_right.push_back(id(i, 0));
+    for(int j = 0; j <= 4; ++j) right.push_back(id(8, j));
+    for(int i = 8; i >= 0; --i) top.push_back(id(i, 4));
+    for(int j = 4; j >= 0; --j) left.push_back(id(0, j));
+    a_bl = add_arc(bottom_left); a_slit = add_arc(slit); a_br = add_arc(bottom_right);
+    a_r = add_arc(right); a_t = add_arc(top); a_l = add_arc(left);
+  }
+};
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(assembly)
@@ -199,36 +250,13 @@ BOOST_AUTO_TEST_CASE(patch_with_a_slit_is_cut_open)
   // A flat 4 x 2 rectangle of 8 x 4 cells; one patch whose bottom side walks up a slit from (2,0) to
   // (2,1) and back down. Without cutting the patch open along the slit, both sides of the slit
   // would share their map positions and the quads there would fold.
-  const int nx = 8, ny = 4;
-  Mesh t;
-  std::vector<V> g;
-  for(int j = 0; j <= ny; ++j)
-    for(int i = 0; i <= nx; ++i) g.push_back(t.add_vertex(Point_3(0.5 * i, 0.5 * j, 0.)));
-  auto id = [&](int i, int j) { return g[std::size_t(j * (nx + 1) + i)]; };
-  QR::Patch_layout_description<Mesh> layout;
-  QR::Patch_layout_description<Mesh>::Patch patch;
-  for(int j = 0; j < ny; ++j)
-    for(int i = 0; i < nx; ++i)
-    {
-      patch.faces.push_back(t.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1)));
-      patch.faces.push_back(t.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1)));
-    }
-  auto add_arc = [&](std::vector<V> chain) {
-    QR::Patch_layout_description<Mesh>::Arc arc;
-    arc.vertices = chain;
-    arc.on_feature = true;
-    layout.arcs.push_back(arc);
-    return layout.arcs.size() - 1;
-  };
-  std::vector<V> bottom_left, slit, bottom_right, right, top, left;
-  for(int i = 0; i <= 4; ++i) bottom_left.push_back(id(i, 0));
-  for(int j = 0; j <= 2; ++j) slit.push_back(id(4, j));
-  for(int i = 4; i <= nx; ++i) bottom_right.push_back(id(i, 0));
-  for(int j = 0; j <= ny; ++j) right.push_back(id(nx, j));
-  for(int i = nx; i >= 0; --i) top.push_back(id(i, ny));
-  for(int j = ny; j >= 0; --j) left.push_back(id(0, j));
-  const std::size_t a_bl = add_arc(bottom_left), a_slit = add_arc(slit), a_br = add_arc(bottom_right),
-                    a_r = add_arc(right), a_t = add_arc(top), a_l = add_arc(left);
+  Slit_grid grid;
+  Mesh& t = grid.mesh;
+  QR::Patch_layout_description<Mesh>& layout = grid.layout;
+  QR::Patch_layout_description<Mesh>::Patch& patch = grid.patch;
+  auto id = [&](int i, int j) { return grid.id(i, j); };
+  const std::size_t a_bl = grid.a_bl, a_slit = grid.a_slit, a_br = grid.a_br, a_r = grid.a_r, a_t = grid.a_t,
+                    a_l = grid.a_l;
   typedef QR::Patch_layout_description<Mesh>::Side_arc SA;
   patch.sides = {{SA{a_bl, false}, SA{a_slit, false}, SA{a_slit, true}, SA{a_br, false}},
                  {SA{a_r, false}}, {SA{a_t, false}}, {SA{a_l, false}}};
@@ -301,42 +329,17 @@ BOOST_AUTO_TEST_CASE(patch_with_a_slit_is_cut_open)
 // (the assembly used to throw); all four go, and the patch is the strip of the three others.
 BOOST_AUTO_TEST_CASE(pattern_closing_a_slit_at_a_corner)
 {
-  const int nx = 8, ny = 4;
-  Mesh t;
-  std::vector<V> g;
-  for(int j = 0; j <= ny; ++j)
-    for(int i = 0; i <= nx; ++i) g.push_back(t.add_vertex(Point_3(0.5 * i, 0.5 * j, 0.)));
-  auto id = [&](int i, int j) { return g[std::size_t(j * (nx + 1) + i)]; };
-  QR::Patch_layout_description<Mesh> layout;
-  QR::Patch_layout_description<Mesh>::Patch patch;
-  for(int j = 0; j < ny; ++j)
-    for(int i = 0; i < nx; ++i)
-    {
-      patch.faces.push_back(t.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1)));
-      patch.faces.push_back(t.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1)));
-    }
-  auto add_arc = [&](std::vector<V> chain) {
-    QR::Patch_layout_description<Mesh>::Arc arc;
-    arc.vertices = chain;
-    arc.on_feature = true;
-    layout.arcs.push_back(arc);
-    return layout.arcs.size() - 1;
-  };
-  // the slit goes down from its tip (4,2) to its base (4,0) on the bottom border
-  std::vector<V> slit, bottom_right, right, top, left, bottom_left;
-  for(int j = 2; j >= 0; --j) slit.push_back(id(4, j));
-  for(int i = 4; i <= nx; ++i) bottom_right.push_back(id(i, 0));
-  for(int j = 0; j <= ny; ++j) right.push_back(id(nx, j));
-  for(int i = nx; i >= 0; --i) top.push_back(id(i, ny));
-  for(int j = ny; j >= 0; --j) left.push_back(id(0, j));
-  for(int i = 0; i <= 4; ++i) bottom_left.push_back(id(i, 0));
-  const std::size_t a_slit = add_arc(slit), a_br = add_arc(bottom_right), a_r = add_arc(right),
-                    a_t = add_arc(top), a_l = add_arc(left), a_bl = add_arc(bottom_left);
+  Slit_grid grid;
+  QR::Patch_layout_description<Mesh>& layout = grid.layout;
+  const std::size_t a_slit = grid.a_slit, a_br = grid.a_br, a_r = grid.a_r, a_t = grid.a_t, a_l = grid.a_l,
+                    a_bl = grid.a_bl;
+  // the patch goes down the slit from its tip (4,2) to its base (4,0) on the bottom border, around the
+  // rectangle and back up
   typedef QR::Patch_layout_description<Mesh>::Side_arc SA;
   // corner 0 at the tip, corner 1 at (8,0), corner 2 at (8,4)
-  patch.sides = {{SA{a_slit, false}, SA{a_br, false}}, {SA{a_r, false}},
-                 {SA{a_t, false}, SA{a_l, false}, SA{a_bl, false}, SA{a_slit, true}}};
-  layout.patches.push_back(patch);
+  grid.patch.sides = {{SA{a_slit, true}, SA{a_br, false}}, {SA{a_r, false}},
+                      {SA{a_t, false}, SA{a_l, false}, SA{a_bl, false}, SA{a_slit, false}}};
+  layout.patches.push_back(grid.patch);
   std::vector<int> counts(layout.arcs.size(), 0);
   counts[a_slit] = 2; counts[a_br] = 3; counts[a_r] = 1; counts[a_t] = 1; counts[a_l] = 1; counts[a_bl] = 2;
   const std::vector<QR::Polygon_quadrangulation> patterns(1, QR::quadrangulate_polygon({5, 1, 6}));
@@ -346,7 +349,7 @@ BOOST_AUTO_TEST_CASE(pattern_closing_a_slit_at_a_corner)
   Mesh q;
   auto qf = get(CGAL::dynamic_edge_property_t<bool>(), q);
   QR::Quad_assembly_statistics s;
-  BOOST_REQUIRE_NO_THROW(s = QR::assemble_quad_mesh(t, layout, counts, patterns, q, qf));
+  BOOST_REQUIRE_NO_THROW(s = QR::assemble_quad_mesh(grid.mesh, layout, counts, patterns, q, qf));
   BOOST_TEST(q.is_valid());
   BOOST_TEST(s.folded_quads == 2u);
   BOOST_TEST(s.closed_quads == 2u);
