@@ -73,11 +73,12 @@ const char* usage_text =
   "\n"
   "  -o OUTPUT            output mesh (.obj, .off or .ply); default: INPUT's name with _quad.obj\n"
   "  --edge-length L      target quad edge length (absolute units)\n"
-  "  --faces N            approximate number of output quads\n"
+  "  --faces N            approximate number of output quads (the sizing tolerance is then 0 unless\n"
+  "                       given: smaller quads where the surface bends would add to N)\n"
   "  --scale S            multiply the default edge length by S\n"
   "  --sizing-tolerance F smaller quads (down to a quarter) where the surface or a feature line bends,\n"
-  "                       keeping a quad's sagitta under F times the bounding-box diagonal (default 0:\n"
-  "                       uniform; e.g. 0.002 brings curved meshes closer to the input, with more quads)\n"
+  "                       keeping a quad's sagitta under F times the bounding-box diagonal (default\n"
+  "                       0.002; 0: the uniform edge length everywhere)\n"
   "  --feature-tolerance F quad edges along a bent feature line stay within F times the bounding-box\n"
   "                       diagonal of the line (default 0.002; 0: no bound)\n"
   "  --surface-tolerance F quad edges across a bend of the surface (a fillet) stay within F times the\n"
@@ -117,11 +118,19 @@ struct Options
 {
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
   double edge_length = 0., scale = 1., feature_angle = 35., feature_gap_angle = -1., time_limit = 0.,
-         sizing_tolerance = 0.,
+         sizing_tolerance = -1., // negative: the default, see sizing()
          feature_tolerance = QR::internal::default_feature_tolerance, surface_tolerance = 0.;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false;
+
+  // the sizing tolerance in use: as given, else 0 with --faces (a count of quads asks for the uniform
+  // size that gives it), else the library's default
+  double sizing() const
+  {
+    if(sizing_tolerance >= 0.) return sizing_tolerance;
+    return faces > 0 ? 0. : QR::internal::default_sizing_tolerance;
+  }
 };
 
 double parse_number(const std::string& option, const std::string& text, double min_value)
@@ -437,7 +446,7 @@ private:
     state_.polygons = std::make_unique<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>>(state_.tmesh,
                                                                                                    *state_.layout);
     const QR::internal::Pipeline_quantization_problem qp = QR::internal::pipeline_quantization_problem(
-      state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing_tolerance,
+      state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing(),
       opt_.feature_tolerance, opt_.surface_tolerance);
     const QR::Side_quantization_problem& pb = qp.problem;
     if(!opt_.dump_dir.empty())
@@ -451,7 +460,7 @@ private:
                                                budget_.stage_limit(QR::internal::quantize_time_share)));
     QR::Report r = st.report();
     budget_.record("quantize", r);
-    r["sizing_tolerance"] = opt_.sizing_tolerance;
+    r["sizing_tolerance"] = opt_.sizing();
     r["feature_tolerance"] = opt_.feature_tolerance;
     r["surface_tolerance"] = opt_.surface_tolerance;
     r["bent_feature_arcs"] = qp.bent_feature_arcs;

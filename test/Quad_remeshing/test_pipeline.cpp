@@ -195,7 +195,8 @@ BOOST_AUTO_TEST_CASE(cap_with_three_feature_edges_gives_no_flat_quad)
   BOOST_TEST(QR::feature_fidelity(t, features, q).feature_coverage >= 0.99);
 }
 
-// With a sizing tolerance the quads shrink where draco's surface bends: more of them, closer to the input.
+// With a sizing tolerance (the default) the quads shrink where draco's surface bends: more of them, closer to
+// the input than with the uniform size.
 BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
 {
   Mesh t;
@@ -218,6 +219,10 @@ BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
   const double sized = run(0.002, sized_faces);
   BOOST_TEST(sized_faces > uniform_faces);
   BOOST_TEST(sized < 0.8 * uniform);
+  // 0.002 is the default
+  Mesh q;
+  QR::quad_remesh(t, q);
+  BOOST_TEST(num_faces(q) == sized_faces);
 }
 
 // The cube's embossed letters have rounded feature lines: without a feature tolerance the quantization
@@ -231,7 +236,8 @@ BOOST_AUTO_TEST_CASE(feature_tolerance_keeps_xyz_cube_letters)
   QR::detect_evaluation_feature_edges(t, features);
   auto run = [&](double tolerance, std::size_t& bent) {
     Mesh q;
-    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::feature_tolerance(tolerance));
+    // (the uniform size: the sizing tolerance would shrink the quads along the bent lines too)
+    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(QR::parameters::feature_tolerance(tolerance), 0.));
     bent = std::size_t(r.find("quantize")->find("bent_feature_arcs")->number());
     BOOST_TEST(QR::quad_mesh_quality(q).valid);
     const QR::Feature_fidelity f = QR::feature_fidelity(t, features, q);
@@ -261,7 +267,8 @@ BOOST_AUTO_TEST_CASE(surface_tolerance_follows_bends)
   QR::detect_evaluation_feature_edges(t, features);
   auto run = [&](double tolerance, std::size_t& bent, std::size_t& quads) {
     Mesh q;
-    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::surface_tolerance(tolerance));
+    // (the uniform size: the sizing tolerance would shrink the quads over the bends too)
+    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(QR::parameters::surface_tolerance(tolerance), 0.));
     bent = std::size_t(r.find("quantize")->find("bent_surface_arcs")->number());
     quads = num_faces(q);
     BOOST_TEST(QR::quad_mesh_quality(q).valid);
@@ -303,6 +310,7 @@ BOOST_AUTO_TEST_CASE(angle_block_crack_stays_open)
 // across a 90-degree crease: the wall leans by about 2 degrees towards the floor there, so the sign of
 // the dot product with the floor's normal took it for the vertex's own side (Hausdorff 0.022 of the
 // diagonal, 0.005 before the adaptive pass). The smoothing now wants the normals within 75 degrees.
+// (0.0108 since the sizing tolerance is on by default: a bent quad on the floor, not a vertex on the wall.)
 BOOST_AUTO_TEST_CASE(angle_block_adaptive_vertices_stay_on_their_side)
 {
   Mesh t, q;
@@ -317,7 +325,7 @@ BOOST_AUTO_TEST_CASE(angle_block_adaptive_vertices_stay_on_their_side)
   BOOST_TEST_MESSAGE("angle_block adaptive: " << quality.faces << " quads, Hausdorff " << f.hausdorff_max
                      << ", coverage " << f.feature_coverage);
   BOOST_TEST(f.feature_coverage >= 0.99);
-  BOOST_TEST(f.hausdorff_max <= 0.008);
+  BOOST_TEST(f.hausdorff_max <= 0.015);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -76,9 +76,10 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamDescription{if positive, quads get smaller (down to a quarter of `quad_edge_length`) where the
                             surface or a feature line bends, so that the sagitta of a quad diagonal stays under
                             this fraction of the bounding-box diagonal; the arcs' target edge counts are measured
-                            in the local length (see the user manual for the measured effect)}
+                            in the local length (see the user manual for the measured effect); 0 gives the
+                            uniform `quad_edge_length` everywhere}
       \cgalParamType{`double`}
-      \cgalParamDefault{`0` (the uniform `quad_edge_length`)}
+      \cgalParamDefault{`0.002`}
     \cgalParamNEnd
     \cgalParamNBegin{feature_tolerance}
       \cgalParamDescription{the quad edges along a feature line (a crease or the boundary) that bends stay within
@@ -196,7 +197,8 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
   std::vector<int> counts;
   const internal::Pipeline_quantization_problem qp = internal::pipeline_quantization_problem(
-    tm, layout, polygons, feature, length, choose_parameter(get_parameter(np, internal_np::sizing_tolerance), 0.),
+    tm, layout, polygons, feature, length,
+    choose_parameter(get_parameter(np, internal_np::sizing_tolerance), internal::default_sizing_tolerance),
     choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance),
     choose_parameter(get_parameter(np, internal_np::surface_tolerance), 0.));
   report["quantize"] = quantize_patch_sides(qp.problem, counts,
