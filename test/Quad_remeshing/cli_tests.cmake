@@ -22,6 +22,10 @@ function(qr_cli_test name expected_exit)
 endfunction()
 
 qr_cli_test(help 0 ARGS --help OUTPUT_MATCHES "usage: quad_remesh")
+# --faces N: the count the quantization's arc counts give is brought within 10% of N by a longer quad edge
+# (fandisk: 916 quads; 1810 when the length came from the area alone)
+qr_cli_test(faces_count_fandisk 0 ARGS ${QR_MESHES}/fandisk.off -o ${QR_CLI_OUT}/fandisk_1000.obj --faces 1000 --threads 1
+            OUTPUT_MATCHES "output: [0-9]+ vertices, (8[5-9][0-9]|9[0-9][0-9]|10[0-9][0-9]|11[0-4][0-9]) faces")
 qr_cli_test(no_input 2 ARGS OUTPUT_MATCHES "no input file")
 qr_cli_test(unknown_option 2 ARGS ${QR_MESHES}/fandisk.off --bogus OUTPUT_MATCHES "unknown option")
 qr_cli_test(bad_stage 2 ARGS ${QR_MESHES}/fandisk.off --until nowhere OUTPUT_MATCHES "unknown stage")
