@@ -469,7 +469,8 @@ private:
     // cheaper than down, bent feature lines and small patches take extra edges): the quad count the
     // counts give is checked and the length made longer until it is within 10% of the request, in at
     // most 4 solves. The count goes as length^-k: k = 2 first, then k measured on the last two solves
-    // (between 0.5 and 2). Only longer: the triangle mesh was made for the first length.
+    // (between 0.5 and 2). Only longer: the triangle mesh was made for the first length. Under --time-limit
+    // every solve gets the quantize share of the time then left, so the solves together stay within it.
     double length = state_.quad_edge_length, last_length = 0., last_count = 0.;
     QR::internal::Pipeline_quantization_problem qp;
     QR::Side_quantization_statistics st;
