@@ -20,6 +20,7 @@
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/quad_count.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/time_budget.h>
 #include <CGAL/Quad_remeshing/html_report.h>
@@ -114,25 +115,6 @@ struct Usage_error : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
-
-// The number of quads the patterns of quadrangulate_polygon() have for these arc counts (the assembly
-// may merge a few at slit tips).
-std::size_t number_of_quads(const QR::Side_quantization_problem& pb, const std::vector<int>& counts)
-{
-  std::size_t n = 0;
-  for(const auto& patch : pb.patches)
-  {
-    std::vector<int> e;
-    for(const auto& side : patch)
-    {
-      int c = 0;
-      for(std::size_t a : side) c += counts[a];
-      e.push_back(c);
-    }
-    n += QR::quadrangulate_polygon(e).quads.size();
-  }
-  return n;
-}
 
 struct Options
 {
@@ -465,37 +447,20 @@ private:
     namespace QRP = QR::parameters;
     state_.polygons = std::make_unique<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>>(state_.tmesh,
                                                                                                    *state_.layout);
-    // With --faces, the arcs' counts overshoot what the length from the area promises (rounding up is
-    // cheaper than down, bent feature lines and small patches take extra edges): the quad count the
-    // counts give is checked and the length made longer until it is within 10% of the request, in at
-    // most 4 solves. The count goes as length^-k: k = 2 first, then k measured on the last two solves
-    // (between 0.5 and 2). Only longer: the triangle mesh was made for the first length. Under --time-limit
-    // every solve gets the quantize share of the time then left, so the solves together stay within it.
-    double length = state_.quad_edge_length, last_length = 0., last_count = 0.;
-    QR::internal::Pipeline_quantization_problem qp;
-    QR::Side_quantization_statistics st;
-    std::size_t solves = 0, predicted = 0;
-    for(;;)
-    {
-      qp = QR::internal::pipeline_quantization_problem(state_.tmesh, *state_.layout, *state_.polygons, state_.feature,
-                                                      length, opt_.sizing(), opt_.feature_tolerance,
-                                                      opt_.surface_tolerance);
-      // no time limit unless asked for: the default node limit keeps the result independent of the load
-      st = QR::quantize_patch_sides(qp.problem, state_.arc_edge_counts,
-                                    QRP::number_of_threads(opt_.threads).maximum_running_time(
-                                      budget_.stage_limit(QR::internal::quantize_time_share)));
-      ++solves;
-      if(opt_.faces <= 0) break;
-      predicted = number_of_quads(qp.problem, state_.arc_edge_counts);
-      const double ratio = double(predicted) / double(opt_.faces);
-      if(ratio < 1.1 || solves == 4) break;
-      double k = 2.;
-      if(last_count > 0. && double(predicted) < last_count)
-        k = (std::min)(2., (std::max)(0.5, std::log(last_count / double(predicted)) / std::log(length / last_length)));
-      last_length = length;
-      last_count = double(predicted);
-      length *= std::pow(ratio, 1. / k);
-    }
+    // With --faces the quad edge length grows until the counts give at most 10% more quads than asked for
+    // (see quantize_for_quad_count()). Under --time-limit every solve gets the quantize share of the time
+    // then left, so the solves together stay within it; no time limit unless asked for: the default node
+    // limit keeps the result independent of the load.
+    const QR::internal::Quad_count_quantization qc = QR::internal::quantize_for_quad_count(
+      state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing(),
+      opt_.feature_tolerance, opt_.surface_tolerance, std::size_t((std::max)(0L, opt_.faces)), state_.arc_edge_counts,
+      [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) {
+        return QR::quantize_patch_sides(problem, counts,
+                                        QRP::number_of_threads(opt_.threads).maximum_running_time(
+                                          budget_.stage_limit(QR::internal::quantize_time_share)));
+      });
+    const QR::internal::Pipeline_quantization_problem& qp = qc.qp;
+    const QR::Side_quantization_statistics& st = qc.stats;
     const QR::Side_quantization_problem& pb = qp.problem;
     if(!opt_.dump_dir.empty())
     {
@@ -506,9 +471,9 @@ private:
     budget_.record("quantize", r);
     if(opt_.faces > 0)
     {
-      r["face_count_solves"] = solves;
-      r["face_count_quad_edge_length"] = length;
-      r["face_count_predicted_quads"] = predicted;
+      r["face_count_solves"] = qc.solves;
+      r["face_count_quad_edge_length"] = qc.quad_edge_length;
+      r["face_count_predicted_quads"] = qc.predicted_quads;
     }
     r["sizing_tolerance"] = opt_.sizing();
     r["feature_tolerance"] = opt_.feature_tolerance;

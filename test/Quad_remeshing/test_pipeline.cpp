@@ -225,6 +225,25 @@ BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
   BOOST_TEST(num_faces(q) == sized_faces);
 }
 
+// number_of_quads(n): the remeshing is made for the length from the area, and the quantization's length
+// grows until its counts give at most 10% more quads than n (the length from the area alone gave fandisk
+// 1810 quads for 1000).
+BOOST_AUTO_TEST_CASE(number_of_quads_is_approximate)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("fandisk.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q, QR::parameters::number_of_quads(std::size_t(1000)));
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST_MESSAGE("fandisk, 1000 quads asked for: " << quality.faces << " in "
+                     << r.find("quantize")->find("face_count_solves")->number() << " solves");
+  BOOST_TEST(quality.faces >= 850u);
+  BOOST_TEST(quality.faces < 1150u);
+  BOOST_TEST(r.find("quantize")->find("face_count_solves")->number() >= 2.);
+  const double predicted = r.find("quantize")->find("face_count_predicted_quads")->number();
+  BOOST_TEST(std::abs(predicted - double(quality.faces)) <= 0.02 * predicted);
+}
+
 // The cube's embossed letters have rounded feature lines: without a feature tolerance the quantization
 // gives some of their bends so few edges that the quad edges cut them (qmeval: feature coverage 0.9975,
 // Hausdorff 0.76% of the diagonal); with the default one they follow them.

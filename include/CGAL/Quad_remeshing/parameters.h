@@ -114,6 +114,8 @@ auto combine(const NP1& np1, const NP2& np2, const NPs&... rest)
 // Parameters shared by several stages (a stage's own parameters live in its header).
 /// target edge length of the output quad mesh (absolute units, `double`)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(quad_edge_length_t, quad_edge_length, quad_edge_length)
+/// approximate number of quads of the output (`std::size_t`, 0 = from the quad edge length)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(number_of_quads_t, number_of_quads, number_of_quads)
 /// dihedral-angle threshold in degrees above which an edge is a feature (`double`)
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_angle_t, feature_angle, feature_angle)
 /// number of worker threads a stage may use (`unsigned`, 1 = sequential)

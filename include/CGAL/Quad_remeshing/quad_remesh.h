@@ -18,6 +18,7 @@
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/quad_count.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/time_budget.h>
 
@@ -72,6 +73,15 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`default_quad_edge_length(tmesh)`}
     \cgalParamNEnd
+    \cgalParamNBegin{number_of_quads}
+      \cgalParamDescription{if positive, the approximate number of quads of the output: the remeshing is made for
+                            `quad_edge_length_from_face_count(tmesh, n)`, the sizing tolerance is 0 unless given,
+                            and the quad edge length of the quantization grows until its arc counts give at most
+                            10% more quads than asked for (at most 4 solves; a layout with more patches than the
+                            count allows keeps it above); ignored for the remeshing if `quad_edge_length` is given}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{`0`}
+    \cgalParamNEnd
     \cgalParamNBegin{sizing_tolerance}
       \cgalParamDescription{if positive, quads get smaller (down to a quarter of `quad_edge_length`) where the
                             surface or a feature line bends, so that the sagitta of a quad diagonal stays under
@@ -79,7 +89,7 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
                             in the local length (see the user manual for the measured effect); 0 gives the
                             uniform `quad_edge_length` everywhere}
       \cgalParamType{`double`}
-      \cgalParamDefault{`0.002`}
+      \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
     \cgalParamNEnd
     \cgalParamNBegin{feature_tolerance}
       \cgalParamDescription{the quad edges along a feature line (a crease or the boundary) that bends stay within
@@ -172,7 +182,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
                  QRP::vertex_is_feature_corner_map(corner))).report();
 
   progress("remesh");
-  const double length = choose_parameter(get_parameter(np, internal_np::quad_edge_length), default_quad_edge_length(tm));
+  const std::size_t wanted_quads = choose_parameter(get_parameter(np, internal_np::number_of_quads), std::size_t(0));
+  const double length = choose_parameter(get_parameter(np, internal_np::quad_edge_length),
+                                         wanted_quads > 0 ? quad_edge_length_from_face_count(tm, wanted_quads)
+                                                          : default_quad_edge_length(tm));
   const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
   report["remesh"] = remesh_for_quadrangulation(tm, feature,
     QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::adaptive_remeshing(adaptive),
@@ -196,15 +209,26 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   progress("quantize");
   const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
   std::vector<int> counts;
-  const internal::Pipeline_quantization_problem qp = internal::pipeline_quantization_problem(
+  // a count of quads asks for the uniform size that gives it: no sizing tolerance unless given
+  const internal::Quad_count_quantization qc = internal::quantize_for_quad_count(
     tm, layout, polygons, feature, length,
-    choose_parameter(get_parameter(np, internal_np::sizing_tolerance), internal::default_sizing_tolerance),
+    choose_parameter(get_parameter(np, internal_np::sizing_tolerance),
+                     wanted_quads > 0 ? 0. : internal::default_sizing_tolerance),
     choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance),
-    choose_parameter(get_parameter(np, internal_np::surface_tolerance), 0.));
-  report["quantize"] = quantize_patch_sides(qp.problem, counts,
-    QRP::number_of_threads(threads)
-      .maximum_running_time(budget.stage_limit(internal::quantize_time_share))).report();
+    choose_parameter(get_parameter(np, internal_np::surface_tolerance), 0.), wanted_quads, counts,
+    [&](const Side_quantization_problem& problem, std::vector<int>& c) {
+      return quantize_patch_sides(problem, c, QRP::number_of_threads(threads)
+                                                .maximum_running_time(budget.stage_limit(internal::quantize_time_share)));
+    });
+  const internal::Pipeline_quantization_problem& qp = qc.qp;
+  report["quantize"] = qc.stats.report();
   budget.record("quantize", report["quantize"]);
+  if(wanted_quads > 0)
+  {
+    report["quantize"]["face_count_solves"] = qc.solves;
+    report["quantize"]["face_count_quad_edge_length"] = qc.quad_edge_length;
+    report["quantize"]["face_count_predicted_quads"] = qc.predicted_quads;
+  }
   report["quantize"]["bent_feature_arcs"] = qp.bent_feature_arcs;
   report["quantize"]["bent_surface_arcs"] = qp.bent_surface_arcs;
   if(!qp.sizing.empty())
