@@ -360,7 +360,8 @@ private:
     const QR::Feature_detection_statistics st = QR::detect_feature_edges(
       state_.tmesh, state_.feature,
       QRP::combine(QRP::feature_angle(opt_.feature_angle).verbose(opt_.verbose), QRP::use_given_feature_edges(given),
-                   QRP::feature_gap_angle(opt_.feature_gap_angle < 0. ? opt_.feature_angle - 10. : opt_.feature_gap_angle),
+                   QRP::feature_gap_angle(opt_.feature_gap_angle < 0. ? QR::internal::default_feature_gap_angle(opt_.feature_angle)
+                                                                      : opt_.feature_gap_angle),
                    QRP::vertex_is_feature_corner_map(state_.corner)));
     if(!opt_.dump_dir.empty())
     {
@@ -469,12 +470,7 @@ private:
     }
     QR::Report r = st.report();
     budget_.record("quantize", r);
-    if(opt_.faces > 0)
-    {
-      r["face_count_solves"] = qc.solves;
-      r["face_count_quad_edge_length"] = qc.quad_edge_length;
-      r["face_count_predicted_quads"] = qc.predicted_quads;
-    }
+    if(opt_.faces > 0) qc.add_to(r);
     r["sizing_tolerance"] = opt_.sizing();
     r["feature_tolerance"] = opt_.feature_tolerance;
     r["surface_tolerance"] = opt_.surface_tolerance;

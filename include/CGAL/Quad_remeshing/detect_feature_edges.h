@@ -40,6 +40,10 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(use_given_feature_edges_t, use_given_fea
 
 namespace CGAL {
 namespace Quad_remeshing {
+namespace internal {
+// the default of `feature_gap_angle`: 10 degrees under the feature angle
+inline double default_feature_gap_angle(double feature_angle) { return feature_angle - 10.; }
+} // namespace internal
 
 /*!
   \ingroup PkgQuadRemeshingRef
@@ -184,7 +188,8 @@ detect_feature_edges(const TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature
                                     get_const_property_map(CGAL::vertex_point, tmesh));
   const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
   const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
-  const double gap_angle = choose_parameter(get_parameter(np, internal_np::feature_gap_angle), angle - 10.);
+  const double gap_angle =
+    choose_parameter(get_parameter(np, internal_np::feature_gap_angle), internal::default_feature_gap_angle(angle));
   const unsigned steps = choose_parameter(get_parameter(np, internal_np::feature_erode_dilate_steps), 4u);
   const double corner_angle = choose_parameter(get_parameter(np, internal_np::feature_corner_angle), 45.);
   const bool given = choose_parameter(get_parameter(np, internal_np::use_given_feature_edges), false);

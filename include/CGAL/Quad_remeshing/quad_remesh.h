@@ -168,7 +168,8 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const std::function<void(const std::string&)> no_callback = [](const std::string&) {};
   const auto progress = choose_parameter(get_parameter(np, CGAL::internal_np::callback), no_callback);
   const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 35.);
-  const double gap_angle = choose_parameter(get_parameter(np, internal_np::feature_gap_angle), angle - 10.);
+  const double gap_angle =
+    choose_parameter(get_parameter(np, internal_np::feature_gap_angle), internal::default_feature_gap_angle(angle));
   const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
   internal::Time_budget budget(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
 
@@ -223,12 +224,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   const internal::Pipeline_quantization_problem& qp = qc.qp;
   report["quantize"] = qc.stats.report();
   budget.record("quantize", report["quantize"]);
-  if(wanted_quads > 0)
-  {
-    report["quantize"]["face_count_solves"] = qc.solves;
-    report["quantize"]["face_count_quad_edge_length"] = qc.quad_edge_length;
-    report["quantize"]["face_count_predicted_quads"] = qc.predicted_quads;
-  }
+  if(wanted_quads > 0) qc.add_to(report["quantize"]);
   report["quantize"]["bent_feature_arcs"] = qp.bent_feature_arcs;
   report["quantize"]["bent_surface_arcs"] = qp.bent_surface_arcs;
   if(!qp.sizing.empty())

@@ -6,6 +6,7 @@
 #ifndef CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_COUNT_H
 #define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_COUNT_H
 
+#include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
 #include <CGAL/Quad_remeshing/quantize_patch_sides.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
@@ -44,6 +45,14 @@ struct Quad_count_quantization
   double quad_edge_length = 0.;       // the length it was made for
   std::size_t solves = 0;
   std::size_t predicted_quads = 0;    // number_of_quads() of the result (0 without a wanted count)
+
+  // the figures, added to the quantize stage's report record
+  void add_to(Report& r) const
+  {
+    r["face_count_solves"] = solves;
+    r["face_count_quad_edge_length"] = quad_edge_length;
+    r["face_count_predicted_quads"] = predicted_quads;
+  }
 };
 
 // Builds the pipeline's quantization problem for `quad_edge_length` and solves it into `counts` with
