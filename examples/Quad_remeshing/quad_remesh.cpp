@@ -67,7 +67,8 @@ const char* usage_text =
   "                   [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
-  "                   [--html FILE.html] [--adaptive-remeshing] [--verbose | --quiet] [--help]\n"
+  "                   [--html FILE.html] [--adaptive-remeshing] [--no-hold-sharp-edges]\n"
+  "                   [--verbose | --quiet] [--help]\n"
   "\n"
   "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
   "lines (sharp creases and boundaries) as chains of edges.\n"
@@ -105,6 +106,8 @@ const char* usage_text =
   "                       and the summary say what they gave up); the output then depends on the\n"
   "                       machine's speed and load\n"
   "  --adaptive-remeshing run the adaptive remeshing pass (experimental)\n"
+  "  --no-hold-sharp-edges let the uniform remeshing pass smooth away the sharp edges that are not\n"
+  "                       features (held in place by default)\n"
   "  --verbose            print progress of every stage\n"
   "  --quiet              print nothing but errors\n"
   "  --list-stages        print every stage and whether this build can run it\n"
@@ -124,7 +127,7 @@ struct Options
          feature_tolerance = QR::internal::default_feature_tolerance, surface_tolerance = 0.;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
-  bool verbose = false, quiet = false, adaptive_remeshing = false;
+  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true;
 
   // the sizing tolerance in use: as given, else 0 with --faces (a count of quads asks for the uniform
   // size that gives it), else the library's default
@@ -187,6 +190,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--surface-tolerance") o.surface_tolerance = parse_number(a, value(), 0.);
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
+    else if(a == "--no-hold-sharp-edges") o.hold_sharp_edges = false;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option '" + a + "'");
     else if(o.input.empty()) o.input = a;
@@ -385,7 +389,8 @@ private:
     const QR::Remeshing_statistics st = QR::remesh_for_quadrangulation(
       state_.tmesh, state_.feature,
       QRP::combine(QRP::quad_edge_length(state_.quad_edge_length).verbose(opt_.verbose),
-                   QRP::adaptive_remeshing(opt_.adaptive_remeshing), QRP::feature_angle(opt_.feature_angle),
+                   QRP::adaptive_remeshing(opt_.adaptive_remeshing), QRP::hold_sharp_edges(opt_.hold_sharp_edges),
+                   QRP::feature_angle(opt_.feature_angle),
                    QRP::vertex_is_feature_corner_map(state_.corner)));
     // later stages index elements densely: drop the removed ones (property maps are compacted with them)
     state_.tmesh.collect_garbage();

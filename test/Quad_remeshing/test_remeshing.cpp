@@ -246,8 +246,8 @@ BOOST_AUTO_TEST_CASE(long_edges_split_evenly)
 // 0.1% of the diagonal); the adaptive pass splits them back onto the input lines.
 BOOST_AUTO_TEST_CASE(plate_with_holes) { check_remeshing("plate_holes.off"); }
 
-// The uniform pass alone measured 0.68% Hausdorff and a sharp-edge coverage of 0.50 here (short sharp
-// chains that the erosion leaves out of the features were smoothed away); the adaptive setting holds them.
+// The uniform pass without held sharp edges measured 0.68% Hausdorff and a sharp-edge coverage of 0.50 here
+// (short sharp chains that the erosion leaves out of the features were smoothed away); both passes hold them.
 BOOST_AUTO_TEST_CASE(organic)
 {
   const Outcome o = check_remeshing("spot.off");
@@ -255,6 +255,47 @@ BOOST_AUTO_TEST_CASE(organic)
 }
 
 BOOST_AUTO_TEST_CASE(open_mesh) { check_remeshing("hemisphere.off"); }
+
+// The uniform pass holds the sharp edges that are not features (spot's short sharp chains, which the
+// erosion leaves out of the features) by default: the remeshed surface keeps those creases, and they are
+// not features afterwards. Without holding them, the pass smooths most of them away.
+BOOST_AUTO_TEST_CASE(uniform_pass_holds_sharp_edges)
+{
+  const Mesh input = load("spot.off");
+  const CGAL::Bbox_3 bb = PMP::bbox(input);
+  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) +
+                                CGAL::square(bb.zmax() - bb.zmin()));
+  const Segments sharp = sharp_edges(input);
+  BOOST_REQUIRE(!sharp.empty());
+  struct Result { QR::Remeshing_statistics stats; double sharp_coverage; Segments features; };
+  auto run = [&](bool hold) {
+    Mesh m = input;
+    auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+    QR::detect_feature_edges(m, f);
+    Result r;
+    r.stats = QR::remesh_for_quadrangulation(m, f, QR::parameters::hold_sharp_edges(hold));
+    Segments edges;
+    for(auto e : m.edges())
+    {
+      const Kernel::Segment_3 s(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e))));
+      edges.push_back(s);
+      if(f[e]) r.features.push_back(s);
+    }
+    r.sharp_coverage = coverage(sharp, edges, diag, 1e-3 * diag);
+    return r;
+  };
+  const Result held = run(true), smoothed = run(false);
+  BOOST_TEST_MESSAGE("sharp-edge coverage " << held.sharp_coverage << " held (" << held.stats.sharp_edges_held
+                     << " edges), " << smoothed.sharp_coverage << " not held; feature edges "
+                     << held.stats.feature_edges_after << " / " << smoothed.stats.feature_edges_after);
+  BOOST_CHECK_GT(held.stats.sharp_edges_held, 0u);
+  BOOST_CHECK_EQUAL(smoothed.stats.sharp_edges_held, 0u);
+  BOOST_CHECK_GE(held.sharp_coverage, 0.97); // 0.980: collapses along a held line can cut its bends
+  BOOST_CHECK_LT(smoothed.sharp_coverage, 0.9);  // 0.804
+  // the held edges are not features: the features are the same lines either way
+  BOOST_CHECK_GE(coverage(held.features, smoothed.features, diag, 1e-3 * diag), 0.99);
+  BOOST_CHECK_GE(coverage(smoothed.features, held.features, diag, 1e-3 * diag), 0.99);
+}
 
 // The uniform pass alone (the default): the sizing field is the uniform length; a looser tolerance refines less.
 BOOST_AUTO_TEST_CASE(adaptive_parameters)

@@ -114,6 +114,12 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{Boolean}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
+    \cgalParamNBegin{hold_sharp_edges}
+      \cgalParamDescription{whether `remesh_for_quadrangulation()` holds the sharp edges that are not features in
+                            place (see there)}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{feature_angle}
       \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
       \cgalParamType{`double`}
@@ -188,8 +194,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
                                          wanted_quads > 0 ? quad_edge_length_from_face_count(tm, wanted_quads)
                                                           : default_quad_edge_length(tm));
   const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
+  const bool hold_sharp = choose_parameter(get_parameter(np, internal_np::hold_sharp_edges), true);
   report["remesh"] = remesh_for_quadrangulation(tm, feature,
     QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::adaptive_remeshing(adaptive),
+                 QRP::hold_sharp_edges(hold_sharp),
                  QRP::feature_angle(angle), QRP::vertex_is_feature_corner_map(corner))).report();
   internal::collect_garbage(tm); // later stages index elements densely
 
