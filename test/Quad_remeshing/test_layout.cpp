@@ -623,6 +623,52 @@ BOOST_AUTO_TEST_CASE(last_resort_cut_splits_a_concave_patch)
   for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(tracer.last_resort_cut(p) == 0u);
 }
 
+BOOST_AUTO_TEST_CASE(last_resort_split_follows_the_field)
+{
+  // A square feature loop inside a grid leaves an annulus around it. The last resort joins its two loops;
+  // with the field at atan(1/2) (26.6 degrees) from the x axis, the Euclidean shortest cut would run along
+  // a grid axis, perpendicular to the border, and make turns all along; the traced cut follows the field.
+  const int n = 12;
+  Mesh m = grid(n);
+  const Vector_3 d(2. / std::sqrt(5.), 1. / std::sqrt(5.), 0.);
+  auto field = m.add_property_map<F, Vector_3>("f:field", d).first;
+  auto feature = m.add_property_map<E, bool>("e:feature", false).first;
+  auto at = [&](int i, int j) { return V(j * (n + 1) + i); };
+  for(int k = 5; k < 7; ++k) {
+    feature[m.edge(m.halfedge(at(k, 5), at(k + 1, 5)))] = true;
+    feature[m.edge(m.halfedge(at(k, 7), at(k + 1, 7)))] = true;
+    feature[m.edge(m.halfedge(at(5, k), at(5, k + 1)))] = true;
+    feature[m.edge(m.halfedge(at(7, k), at(7, k + 1)))] = true;
+  }
+  Layout layout(m, field, no_singularity);
+  layout.add_feature_paths(feature);
+  BOOST_REQUIRE(layout.number_of_patches() == 2u);
+  std::size_t annulus = 0;
+  for(std::size_t p = 0; p < 2; ++p) if(layout.validity(p) == Layout::NOT_A_DISK) annulus = p;
+  BOOST_REQUIRE(layout.validity(annulus) == Layout::NOT_A_DISK);
+  std::vector<char> was_cut;
+  for(E e : m.edges()) was_cut.push_back(layout.is_cut(e));
+
+  CGAL::Quad_remeshing::internal::Layout_tracer<Layout> tracer(layout);
+  BOOST_TEST(tracer.last_resort_split(annulus) == 1u);
+  for(std::size_t p = 0; p < layout.number_of_patches(); ++p) BOOST_TEST(layout.validity(p) != Layout::NOT_A_DISK);
+  // the new cut edges: their sum (the chord of the cut, up to sign per edge) is within 15 degrees of a field direction
+  Vector_3 chord(0, 0, 0);
+  std::size_t added = 0;
+  for(E e : m.edges()) {
+    if(!layout.is_cut(e) || was_cut[std::size_t(e)]) continue;
+    ++added;
+    Vector_3 u = m.point(m.target(m.halfedge(e))) - m.point(m.source(m.halfedge(e)));
+    if(u * d < 0. || (u * d == 0. && u * Vector_3(-d.y(), d.x(), 0.) < 0.)) u = -u;
+    chord = chord + u;
+  }
+  BOOST_TEST(added >= 2u);
+  const double l = std::sqrt(chord * chord);
+  const double cosine = (std::max)(std::abs(chord * d), std::abs(chord * Vector_3(-d.y(), d.x(), 0.))) / l;
+  BOOST_TEST_MESSAGE("last-resort split: " << added << " edges, chord " << chord << ", cosine to the field " << cosine);
+  BOOST_TEST(cosine > std::cos(15. * CGAL_PI / 180.));
+}
+
 BOOST_AUTO_TEST_CASE(path_part_removal_merges_a_concave_patch)
 {
   // Path A runs along row 4 from border to border. Path U comes down column 1 from the top border, crosses
