@@ -85,7 +85,8 @@ const char* usage_text =
   "  --feature-tolerance F quad edges along a bent feature line stay within F times the bounding-box\n"
   "                       diagonal of the line (default 0.002; 0: no bound)\n"
   "  --surface-tolerance F quad edges across a bend of the surface (a fillet) stay within F times the\n"
-  "                       bounding-box diagonal along the normal (default 0: no bound; e.g. 0.002)\n"
+  "                       bounding-box diagonal along the normal (default 0.002, 0 with --faces\n"
+  "                       unless given; 0: no bound)\n"
   "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
   "  --feature-gap-angle DEG  dihedral angle above which a few edges continuing a feature line\n"
   "                       across a gap, to another feature edge, are features too (default: the\n"
@@ -124,7 +125,8 @@ struct Options
   std::string input, output, features_file, until = "smooth", dump_dir, report_file, html_file;
   double edge_length = 0., scale = 1., feature_angle = 35., feature_gap_angle = -1., time_limit = 0.,
          sizing_tolerance = -1., // negative: the default, see sizing()
-         feature_tolerance = QR::internal::default_feature_tolerance, surface_tolerance = 0.;
+         feature_tolerance = QR::internal::default_feature_tolerance,
+         surface_tolerance = -1.; // negative: the default, see surface()
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true;
@@ -135,6 +137,12 @@ struct Options
   {
     if(sizing_tolerance >= 0.) return sizing_tolerance;
     return faces > 0 ? 0. : QR::internal::default_sizing_tolerance;
+  }
+  // the surface tolerance in use, the same way
+  double surface() const
+  {
+    if(surface_tolerance >= 0.) return surface_tolerance;
+    return faces > 0 ? 0. : QR::internal::default_surface_tolerance;
   }
 };
 
@@ -459,7 +467,7 @@ private:
     // limit keeps the result independent of the load.
     const QR::internal::Quad_count_quantization qc = QR::internal::quantize_for_quad_count(
       state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing(),
-      opt_.feature_tolerance, opt_.surface_tolerance, std::size_t((std::max)(0L, opt_.faces)), state_.arc_edge_counts,
+      opt_.feature_tolerance, opt_.surface(), std::size_t((std::max)(0L, opt_.faces)), state_.arc_edge_counts,
       [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) {
         return QR::quantize_patch_sides(problem, counts,
                                         QRP::number_of_threads(opt_.threads).maximum_running_time(
@@ -478,7 +486,7 @@ private:
     if(opt_.faces > 0) qc.add_to(r);
     r["sizing_tolerance"] = opt_.sizing();
     r["feature_tolerance"] = opt_.feature_tolerance;
-    r["surface_tolerance"] = opt_.surface_tolerance;
+    r["surface_tolerance"] = opt_.surface();
     r["bent_feature_arcs"] = qp.bent_feature_arcs;
     r["bent_surface_arcs"] = qp.bent_surface_arcs;
     if(!qp.sizing.empty()) r["smallest_local_quad_edge_length"] = *std::min_element(qp.sizing.begin(), qp.sizing.end());

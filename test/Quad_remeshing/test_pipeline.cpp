@@ -207,7 +207,8 @@ BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
   QR::detect_evaluation_feature_edges(t, features);
   auto run = [&](double tolerance, std::size_t& faces) {
     Mesh q;
-    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(tolerance));
+    // (no surface tolerance, which refines draco's bends too)
+    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(QR::parameters::surface_tolerance(0.), tolerance));
     BOOST_TEST((r.find("quantize")->find("smallest_local_quad_edge_length") != nullptr) == (tolerance > 0.));
     const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
     BOOST_TEST(quality.valid);
@@ -223,7 +224,7 @@ BOOST_AUTO_TEST_CASE(sizing_tolerance_brings_draco_closer)
   BOOST_TEST(sized < 0.8 * uniform);
   // 0.002 is the default
   Mesh q;
-  QR::quad_remesh(t, q);
+  QR::quad_remesh(t, q, QR::parameters::surface_tolerance(0.));
   BOOST_TEST(num_faces(q) == sized_faces);
 }
 
@@ -289,7 +290,10 @@ BOOST_AUTO_TEST_CASE(surface_tolerance_follows_bends)
   auto run = [&](double tolerance, std::size_t& bent, std::size_t& quads) {
     Mesh q;
     // (the uniform size: the sizing tolerance would shrink the quads over the bends too)
-    const QR::Report r = QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(QR::parameters::surface_tolerance(tolerance), 0.));
+    // (a negative tolerance: the default)
+    const QR::Report r = tolerance < 0.
+                           ? QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(0.))
+                           : QR::quad_remesh(t, q, QR::parameters::sizing_tolerance(QR::parameters::surface_tolerance(tolerance), 0.));
     bent = std::size_t(r.find("quantize")->find("bent_surface_arcs")->number());
     quads = num_faces(q);
     BOOST_TEST(QR::quad_mesh_quality(q).valid);
@@ -307,6 +311,11 @@ BOOST_AUTO_TEST_CASE(surface_tolerance_follows_bends)
   BOOST_TEST(quads < 2 * quads_none);
   BOOST_TEST(bounded.hausdorff_max < 0.8 * none.hausdorff_max);
   BOOST_TEST(bounded.feature_coverage >= none.feature_coverage);
+  // 0.002 is the default
+  std::size_t bent_default = 0, quads_default = 0;
+  run(-1., bent_default, quads_default);
+  BOOST_TEST(bent_default == bent);
+  BOOST_TEST(quads_default == quads);
 }
 
 // angle_block has a crack: a boundary loop of four edges whose two middle vertices share a position.

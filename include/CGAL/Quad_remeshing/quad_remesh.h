@@ -104,9 +104,9 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
                             this fraction of the bounding-box diagonal along the surface normal: an arc over a bend
                             of the surface (a fillet, a rounded body) gets at least the edges that takes, up to about
                             twice its target count. The density elsewhere does not change (see the user manual for
-                            the measured effect)}
+                            the measured effect). 0: no such bound}
       \cgalParamType{`double`}
-      \cgalParamDefault{`0` (no such bound)}
+      \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
     \cgalParamNEnd
     \cgalParamNBegin{adaptive_remeshing}
       \cgalParamDescription{whether `remesh_for_quadrangulation()` runs its adaptive pass after the uniform one
@@ -224,7 +224,9 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
     choose_parameter(get_parameter(np, internal_np::sizing_tolerance),
                      wanted_quads > 0 ? 0. : internal::default_sizing_tolerance),
     choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance),
-    choose_parameter(get_parameter(np, internal_np::surface_tolerance), 0.), wanted_quads, counts,
+    choose_parameter(get_parameter(np, internal_np::surface_tolerance),
+                     wanted_quads > 0 ? 0. : internal::default_surface_tolerance),
+    wanted_quads, counts,
     [&](const Side_quantization_problem& problem, std::vector<int>& c) {
       return quantize_patch_sides(problem, c, QRP::number_of_threads(threads)
                                                 .maximum_running_time(budget.stage_limit(internal::quantize_time_share)));
