@@ -558,6 +558,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
       if(get(edge_is_feature_map, e))
         reference.feature_segments.emplace_back(get(vpm, source(halfedge(e, tmesh), tmesh)),
                                                 get(vpm, target(halfedge(e, tmesh), tmesh)));
+  // (the adaptive pass appends the held edges to them)
+  const std::size_t input_feature_segments = reference.feature_segments.size();
   if(adaptive)
   {
     reference.points.reserve(st.vertices_before);
@@ -736,10 +738,9 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
       typedef typename GT::Segment_3 Segment;
       typedef CGAL::AABB_segment_primitive<GT, typename std::vector<Segment>::const_iterator> Prim;
       typedef CGAL::AABB_tree<CGAL::AABB_traits<GT, Prim>> Seg_tree;
-      // (the adaptive pass has the held segments appended to the input's feature segments)
-      const std::ptrdiff_t appended = adaptive ? std::ptrdiff_t(held_segments.size()) : 0;
       const std::vector<Segment> feature_segments(reference.feature_segments.begin(),
-                                                  reference.feature_segments.end() - appended);
+                                                  reference.feature_segments.begin() +
+                                                    std::ptrdiff_t(input_feature_segments));
       Seg_tree ftree(feature_segments.begin(), feature_segments.end()), htree(held_segments.begin(), held_segments.end());
       if(!feature_segments.empty()) ftree.accelerate_distance_queries();
       if(!held_segments.empty()) htree.accelerate_distance_queries();

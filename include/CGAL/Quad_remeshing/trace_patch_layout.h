@@ -463,12 +463,8 @@ public:
       const int end_loop = loop_of[layout_.vertex_index(c.vertices.back())];
       if(end_loop < 0 || end_loop == start_loop) continue; // back on its own loop (or outside the patch)
       Patch_change change = layout_.preview_add_path(c);
-      std::size_t invalid = 0, bad = 0;
-      for(const Patch& N : change.new_patches) {
-        invalid += layout_.validity(N) != Layout::SATISFIED;
-        bad += badness(N);
-      }
-      const auto key = std::make_tuple(invalid, bad, c.vertices.size());
+      const auto counts = invalid_and_badness(change);
+      const auto key = std::make_tuple(counts.first, counts.second, c.vertices.size());
       if(!found || key < best) {
         found = true;
         best = key;
@@ -560,6 +556,17 @@ public:
     for(Turn t : P.turns[0]) b += t == Layout::LEFT_TURN ? 1 : (t == Layout::U_TURN ? 2 : 0);
     const std::size_t c = P.corners.size();
     return b + (c < 3 ? 3 - c : (c > 6 ? c - 6 : 0));
+  }
+
+  // the number of invalid patches among the patches change `c` makes, and the sum of their badness()
+  std::pair<std::size_t, std::size_t> invalid_and_badness(const Patch_change& c) const
+  {
+    std::pair<std::size_t, std::size_t> r(0, 0);
+    for(const Patch& N : c.new_patches) {
+      r.first += layout_.validity(N) != Layout::SATISFIED;
+      r.second += badness(N);
+    }
+    return r;
   }
 
   std::size_t cuts_made = 0; // paths inserted by last_resort_cut() and kept
@@ -668,12 +675,9 @@ public:
         const double cosine = l > 0. ? std::abs(CGAL::to_double(u * layout_.direction(n.vertex, n.direction))) / l : 1.;
         cost += l * (1. + 2. * (1. - cosine) / (1. - std::sqrt(0.5)));
       }
-      Key key{0, 0, false, cost};
-      for(const Patch& N : change.new_patches) {
-        key.invalid += layout_.validity(N) != Layout::SATISFIED;
-        key.badness += badness(N);
-        key.tiny = key.tiny || N.faces.size() < min_patch_faces;
-      }
+      const auto counts = invalid_and_badness(change);
+      Key key{counts.first, counts.second, false, cost};
+      for(const Patch& N : change.new_patches) key.tiny = key.tiny || N.faces.size() < min_patch_faces;
       if(key.invalid <= 1 && key.badness < before && (!found || key < best)) {
         found = true;
         best = key;
