@@ -12,6 +12,7 @@
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/Patch_layout.h>
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/assembly_repairs.h>
 #include <CGAL/Quad_remeshing/cross_field.h>
 #include <CGAL/Quad_remeshing/detect_feature_edges.h>
 #include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
@@ -243,6 +244,7 @@ struct Pipeline_state
   std::unique_ptr<Layout> layout;
   std::unique_ptr<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>> polygons;
   std::vector<int> arc_edge_counts;
+  QR::Side_quantization_problem quantization_problem; // what arc_edge_counts solve (the assembly may solve it again)
   Quad_mesh qmesh;
   Quad_mesh::Property_map<Quad_mesh::Edge_index, bool> qfeature;
   bool has_quads = false;
@@ -456,24 +458,30 @@ private:
     return st.report();
   }
 
+  // The quantize stage's solve. Under --time-limit every solve gets the quantize share of the time then
+  // left, so the solves together stay within it; no time limit unless asked for: the default node limit
+  // keeps the result independent of the load.
+  QR::Side_quantization_statistics solve(const QR::Side_quantization_problem& problem, std::vector<int>& counts)
+  {
+    namespace QRP = QR::parameters;
+    return QR::quantize_patch_sides(problem, counts,
+                                    QRP::number_of_threads(opt_.threads).maximum_running_time(
+                                      budget_.stage_limit(QR::internal::quantize_time_share)));
+  }
+
   QR::Report stage_quantize()
   {
     namespace QRP = QR::parameters;
     state_.polygons = std::make_unique<QR::internal::Quadrangulation_layout<Triangle_mesh, Layout>>(state_.tmesh,
                                                                                                    *state_.layout);
     // With --faces the quad edge length grows until the counts give at most 10% more quads than asked for
-    // (see quantize_for_quad_count()). Under --time-limit every solve gets the quantize share of the time
-    // then left, so the solves together stay within it; no time limit unless asked for: the default node
-    // limit keeps the result independent of the load.
+    // (see quantize_for_quad_count()).
     const QR::internal::Quad_count_quantization qc = QR::internal::quantize_for_quad_count(
       state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing(),
       opt_.feature_tolerance, opt_.surface(), std::size_t((std::max)(0L, opt_.faces)), state_.arc_edge_counts,
-      [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) {
-        return QR::quantize_patch_sides(problem, counts,
-                                        QRP::number_of_threads(opt_.threads).maximum_running_time(
-                                          budget_.stage_limit(QR::internal::quantize_time_share)));
-      });
+      [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) { return solve(problem, counts); });
     const QR::internal::Pipeline_quantization_problem& qp = qc.qp;
+    state_.quantization_problem = qp.problem;
     const QR::Side_quantization_statistics& st = qc.stats;
     const QR::Side_quantization_problem& pb = qp.problem;
     if(!opt_.dump_dir.empty())
@@ -500,29 +508,25 @@ private:
   {
     const auto description =
       QR::internal::layout_description(state_.tmesh, *state_.layout, *state_.polygons, state_.feature);
-    std::vector<QR::Polygon_quadrangulation> patterns;
+    state_.qfeature = state_.qmesh.add_property_map<Quad_mesh::Edge_index, bool>("e:qr_feature", false).first;
+    // patterns that cannot be glued get more edges on their arcs (the counts are solved again)
+    const QR::internal::Repaired_assembly assembly = QR::internal::assemble_with_count_repairs(
+      state_.tmesh, description, state_.quantization_problem, state_.arc_edge_counts,
+      [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) { return solve(problem, counts); },
+      state_.qmesh, state_.qfeature, opt_.verbose);
+    const QR::Quad_assembly_statistics& st = assembly.stats;
     std::size_t simple = 0, general = 0;
     std::map<int, int> irregular;
-    for(const auto& patch : description.patches)
+    for(const auto& pattern : assembly.patterns)
     {
-      std::vector<int> e;
-      for(const auto& side : patch.sides)
-      {
-        int c = 0;
-        for(const auto& sa : side) c += state_.arc_edge_counts[sa.arc];
-        e.push_back(c);
-      }
-      patterns.push_back(QR::quadrangulate_polygon(e));
-      if(patterns.back().strategy == QR::Polygon_quadrangulation::SIMPLE) ++simple; else ++general;
-      for(const auto& kv : patterns.back().irregular_vertices_by_valence) irregular[kv.first] += kv.second;
+      if(pattern.strategy == QR::Polygon_quadrangulation::SIMPLE) ++simple; else ++general;
+      for(const auto& kv : pattern.irregular_vertices_by_valence) irregular[kv.first] += kv.second;
     }
-    state_.qfeature = state_.qmesh.add_property_map<Quad_mesh::Edge_index, bool>("e:qr_feature", false).first;
-    const QR::Quad_assembly_statistics st =
-      QR::assemble_quad_mesh(state_.tmesh, description, state_.arc_edge_counts, patterns, state_.qmesh, state_.qfeature,
-                             opt_.verbose);
     state_.has_quads = true;
     if(!opt_.dump_dir.empty()) QR::write_mesh(opt_.dump_dir + "/7_quadrangulate.obj", state_.qmesh);
     QR::Report r = st.report();
+    r["count_repairs"] = assembly.count_repairs;
+    r["repaired_patches"] = assembly.repaired_patches;
     r["simple_patches"] = simple;
     r["general_patches"] = general;
     for(const auto& kv : irregular) r["pattern_irregular_vertices"][std::to_string(kv.first)] = kv.second;

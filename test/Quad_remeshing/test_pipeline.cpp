@@ -147,6 +147,29 @@ BOOST_AUTO_TEST_CASE(elephant_quad_at_a_held_spur_is_inset)
   BOOST_TEST(!q.has_garbage());
 }
 
+// elephant at 500 quads, with the smoothest field (no curvature pull) and no features: a patch whose
+// boundary meets itself (an inner loop bridged to the outer one) gets a pattern with a chord between two
+// boundary points that the gluing makes the two ends of a one-edge arc, and the two quads on that edge
+// would have it in the same direction. The assembly must give the patches involved more edges and
+// solve the counts again, instead of failing.
+BOOST_AUTO_TEST_CASE(conflicting_patterns_get_more_edges)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("elephant.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q, QR::parameters::combine(QR::parameters::number_of_quads(500),
+    QR::parameters::feature_angle(180.), QR::parameters::curvature_alignment_weight(0.),
+    QR::parameters::number_of_threads(2u)));
+  const QR::Report& quadrangulate = *r.find("quadrangulate");
+  BOOST_TEST(quadrangulate.find("count_repairs")->number() >= 1.);
+  BOOST_TEST(quadrangulate.find("repaired_patches")->number() >= 2.);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(q.is_valid(false));
+  BOOST_TEST(CGAL::is_closed(q));
+}
+
 // chair_doublesided (every face twice, in both orientations, many non-manifold edges) repairs into
 // thin closed sheets whose layout has patches with slits and bridges (sides that walk an arc there
 // and back): the assembly must cut them open, and the result must still be a valid quad mesh.

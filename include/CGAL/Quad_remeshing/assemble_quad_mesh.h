@@ -27,6 +27,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -102,6 +103,25 @@ struct Quad_assembly_statistics
 
 /*!
   \ingroup PkgQuadRemeshingRef
+  Thrown by `assemble_quad_mesh()` when the quadrangulations of some patches, glued along the arcs,
+  would give two quads the same edge in the same direction. This happens where a patch's boundary meets
+  itself (a bridge to an inner loop) and an edge of its pattern joins two boundary points that the
+  gluing makes neighbours on an arc of few edges: the pattern's chord and the arc then join the same
+  two vertices. More edges on the arcs of the patches named here remove the coincidence (the pipeline
+  does so, see `quad_remesh()`). The output mesh is left empty.
+*/
+struct Quad_assembly_conflict : std::runtime_error
+{
+  std::vector<std::size_t> patches; ///< the patches whose quads conflict, in increasing order, without repetition
+
+  /// the error message and the patches involved
+  Quad_assembly_conflict(const std::string& what, std::vector<std::size_t> involved)
+    : std::runtime_error(what), patches(std::move(involved))
+  {}
+};
+
+/*!
+  \ingroup PkgQuadRemeshingRef
 
   places the quadrangulation of every patch on the triangle mesh and merges them into one conforming
   quad mesh.
@@ -141,8 +161,10 @@ struct Quad_assembly_statistics
   @param qmesh_edge_is_feature receives `true` for the quad edges on feature arcs and `false` for the others
   @param verbose whether to print progress to `std::cerr`
 
-  @throws std::invalid_argument if the counts do not match the quadrangulations, and
-          std::runtime_error if a patch is not a disk or the quads do not form a manifold mesh
+  @throws std::invalid_argument if the counts do not match the quadrangulations,
+          `Quad_assembly_conflict` (before `qmesh` is changed) if two quads would have the same edge in
+          the same direction, and std::runtime_error if a patch is not a disk or the quads do not form
+          a manifold mesh for another reason
 */
 template <typename TriangleMesh, typename PatchQuadrangulation, typename QuadMesh, typename EdgeFeatureMap>
 Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
@@ -407,6 +429,31 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
       for(q_index w : {a, b, x, y}) work.push_back(w);
     }
     drop_quads(gone);
+  }
+
+  // Two quads with the same directed edge cannot both be faces: find every such pair before the mesh
+  // is touched, so that the caller can change the counts of the patches involved and try again.
+  {
+    std::map<std::pair<q_index, q_index>, std::size_t> quad_of_edge;
+    std::set<std::size_t> involved;
+    std::string first;
+    for(std::size_t k = 0; k < quads.size(); ++k)
+      for(std::size_t i = 0; i < 4; ++i)
+      {
+        const auto ins = quad_of_edge.emplace(std::make_pair(quads[k][i], quads[k][(i + 1) % 4]), k);
+        if(ins.second) continue;
+        const std::size_t other = ins.first->second;
+        if(first.empty())
+          first = "quad " + std::to_string(k) + " of patch " + std::to_string(quad_patch[k]) + " and quad "
+                  + std::to_string(other) + " of patch " + std::to_string(quad_patch[other])
+                  + " use the same edge in the same direction";
+        involved.insert(quad_patch[k]);
+        involved.insert(quad_patch[other]);
+      }
+    if(!involved.empty())
+      throw Quad_assembly_conflict("assemble_quad_mesh: the patch quadrangulations do not form a manifold mesh ("
+                                     + first + ")",
+                                   std::vector<std::size_t>(involved.begin(), involved.end()));
   }
 
   // Says why a quad cannot be added, naming the patches involved (only called on failure).

@@ -102,6 +102,9 @@ struct Cross_field_singularity_statistics
 
 namespace internal {
 
+constexpr double default_curvature_alignment_weight = 0.1; // compute_cross_field()'s `curvature_alignment_weight`
+constexpr int default_curvature_smoothing_steps = 8;       // compute_cross_field()'s `curvature_smoothing_steps`
+
 template <typename Point, typename VPM>
 Vec3d to_vec3d(const Point& p)
 {
@@ -257,10 +260,10 @@ Cross_field_statistics compute_cross_field(const TriangleMesh& tmesh, EdgeIsFeat
   CGAL::Real_timer timer;
   timer.start();
   if(!CGAL::is_triangle_mesh(tmesh)) throw std::invalid_argument("compute_cross_field: the mesh is not a triangle mesh");
-  const double weight = choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight), 0.1);
+  const double weight = choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight), default_curvature_alignment_weight);
   if(!(weight >= 0.) || !std::isfinite(weight))
     throw std::invalid_argument("compute_cross_field: curvature_alignment_weight must be finite and >= 0");
-  const int smoothing_steps = choose_parameter(get_parameter(np, internal_np::curvature_smoothing_steps), 8);
+  const int smoothing_steps = choose_parameter(get_parameter(np, internal_np::curvature_smoothing_steps), default_curvature_smoothing_steps);
   if(smoothing_steps < 0) throw std::invalid_argument("compute_cross_field: curvature_smoothing_steps must be >= 0");
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, tmesh));

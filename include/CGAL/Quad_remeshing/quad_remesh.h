@@ -17,6 +17,7 @@
 #include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/assembly_repairs.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_count.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
@@ -49,7 +50,10 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
   with its defaults: `detect_feature_edges()`, `remesh_for_quadrangulation()` (on a copy of `tmesh`),
   `compute_cross_field()` and `compute_cross_field_singularities()`, `Patch_layout` and
   `trace_patch_layout()`, `quantize_patch_sides()`, `quadrangulate_polygon()` per patch,
-  `assemble_quad_mesh()` and `smooth_quad_mesh()`.
+  `assemble_quad_mesh()` and `smooth_quad_mesh()`. Where the patterns of some patches cannot be glued
+  (`Quad_assembly_conflict`), the arcs of those patches get more edges and the counts are solved again
+  (at most 4 times; the `quadrangulate` record's `count_repairs` and `repaired_patches` say how often
+  and for how many patches).
 
   \code{.cpp}
   Mesh tmesh, qmesh;
@@ -119,6 +123,18 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
                             place (see there)}
       \cgalParamType{Boolean}
       \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{curvature_alignment_weight}
+      \cgalParamDescription{passed on to `compute_cross_field()`: the weight of the pull of the cross field towards
+                            the principal curvature directions (0: the smoothest field)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{curvature_smoothing_steps}
+      \cgalParamDescription{passed on to `compute_cross_field()`: the face-ring averaging steps of the curvature
+                            directions}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`8`}
     \cgalParamNEnd
     \cgalParamNBegin{feature_angle}
       \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
@@ -204,7 +220,14 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   progress("field");
   auto field = get(CGAL::dynamic_face_property_t<typename K::Vector_3>(), tm);
   auto singularity = get(CGAL::dynamic_vertex_property_t<int>(), tm);
-  report["field"] = compute_cross_field(tm, feature, field, CGAL::parameters::verbose(verbose)).report();
+  report["field"] = compute_cross_field(tm, feature, field,
+    QRP::combine(CGAL::parameters::verbose(verbose),
+                 QRP::curvature_alignment_weight(
+                   choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight),
+                                    internal::default_curvature_alignment_weight)),
+                 QRP::curvature_smoothing_steps(
+                   choose_parameter(get_parameter(np, internal_np::curvature_smoothing_steps),
+                                    internal::default_curvature_smoothing_steps)))).report();
   report["singularities"] =
     compute_cross_field_singularities(tm, feature, field, singularity, CGAL::parameters::verbose(verbose)).report();
 
@@ -218,6 +241,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   progress("quantize");
   const internal::Quadrangulation_layout<TriangleMesh, Layout> polygons(tm, layout);
   std::vector<int> counts;
+  auto solve = [&](const Side_quantization_problem& problem, std::vector<int>& c) {
+    return quantize_patch_sides(problem, c, QRP::number_of_threads(threads)
+                                              .maximum_running_time(budget.stage_limit(internal::quantize_time_share)));
+  };
   // a count of quads asks for the uniform size that gives it: no sizing tolerance unless given
   const internal::Quad_count_quantization qc = internal::quantize_for_quad_count(
     tm, layout, polygons, feature, length,
@@ -226,11 +253,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
     choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance),
     choose_parameter(get_parameter(np, internal_np::surface_tolerance),
                      wanted_quads > 0 ? 0. : internal::default_surface_tolerance),
-    wanted_quads, counts,
-    [&](const Side_quantization_problem& problem, std::vector<int>& c) {
-      return quantize_patch_sides(problem, c, QRP::number_of_threads(threads)
-                                                .maximum_running_time(budget.stage_limit(internal::quantize_time_share)));
-    });
+    wanted_quads, counts, solve);
   const internal::Pipeline_quantization_problem& qp = qc.qp;
   report["quantize"] = qc.stats.report();
   budget.record("quantize", report["quantize"]);
@@ -242,20 +265,12 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
 
   progress("quadrangulate");
   const auto description = internal::layout_description(tm, layout, polygons, feature);
-  std::vector<Polygon_quadrangulation> patterns;
-  for(const auto& patch : description.patches)
-  {
-    std::vector<int> e;
-    for(const auto& side : patch.sides)
-    {
-      int c = 0;
-      for(const auto& sa : side) c += counts[sa.arc];
-      e.push_back(c);
-    }
-    patterns.push_back(quadrangulate_polygon(e));
-  }
   auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), qmesh);
-  report["quadrangulate"] = assemble_quad_mesh(tm, description, counts, patterns, qmesh, qfeature, verbose).report();
+  const internal::Repaired_assembly assembly =
+    internal::assemble_with_count_repairs(tm, description, qp.problem, counts, solve, qmesh, qfeature, verbose);
+  report["quadrangulate"] = assembly.stats.report();
+  report["quadrangulate"]["count_repairs"] = assembly.count_repairs;
+  report["quadrangulate"]["repaired_patches"] = assembly.repaired_patches;
 
   progress("smooth");
   report["smooth"] = smooth_quad_mesh(qmesh, tm, feature,
