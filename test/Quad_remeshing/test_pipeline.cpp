@@ -170,6 +170,22 @@ BOOST_AUTO_TEST_CASE(conflicting_patterns_get_more_edges)
   BOOST_TEST(CGAL::is_closed(q));
 }
 
+// xyz_cube_20mm without feature lines: one arc of the layout has a minimum edge count far above its
+// target (an arc over the embossed letters), in a strip of arcs whose other end is at the top of its
+// window, so the quantization's fallback could move the strip neither up nor down; it clamped that arc at
+// its minimum instead, which left odd perimeters and made the quantize stage fail.
+BOOST_AUTO_TEST_CASE(xyz_cube_without_features_quantizes)
+{
+  Mesh t, q;
+  QR::read_and_repair(qr_test::data_file("xyz_cube_20mm.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q, QR::parameters::feature_angle(180.));
+  BOOST_TEST(r.find("quantize")->find("odd_perimeters")->number() == 0.);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+}
+
 // chair_doublesided (every face twice, in both orientations, many non-manifold edges) repairs into
 // thin closed sheets whose layout has patches with slits and bridges (sides that walk an arc there
 // and back): the assembly must cut them open, and the result must still be a valid quad mesh.

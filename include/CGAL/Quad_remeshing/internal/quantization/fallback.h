@@ -155,7 +155,11 @@ inline void fallback_assignment(const Quantization_view& v, std::vector<int>& s)
     };
     int d = g.mean_target[r] < double(s[m[0]]) ? -1 : 1;
     if(!fits(d)) d = -d;
-    for(std::size_t a : m) s[a] = (std::max)(v.problem->arcs[a].minimum, s[a] + d); // windows are at least 4 wide: d fits
+    // Neither fits when one arc of the strip is at the low end of its window and another at the high
+    // end (a minimum far above the target raises the low end): +1 then, above a window rather than
+    // below a minimum. Every arc of the strip must change, or the parities on the way break.
+    if(!fits(d)) d = 1;
+    for(std::size_t a : m) s[a] += d;
   };
   auto strip_edges = [&](std::size_t p) -> const std::vector<std::pair<std::size_t, std::size_t> >& { return g.adjacent[p]; };
   for(std::size_t start = 0; start < np; ++start) {
