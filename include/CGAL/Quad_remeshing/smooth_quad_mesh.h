@@ -226,8 +226,9 @@ void collect_garbage_of(Mesh&) {}
   mean plane) and moves every vertex, damped, towards the average of the fitted positions of its
   corners ("tangent-space smoothing" by template fitting). Free vertices are then projected back onto
   the triangle mesh (closest point, AABB tree), on their own side of it: a closest point on a face whose
-  normal is turned by 90 degrees or more from that of the face the vertex started on (the other sheet of
-  a thin plate, the other side of a crease) is replaced by the closest point on the nearby faces that
+  normal is turned by 75 degrees or more from that of the face the vertex started on (the other sheet of
+  a thin plate, the other side of a crease), or on another connected component (where components pass
+  through each other), is replaced by the closest point on the nearby faces of its component that
   agree with it; vertices on a feature line slide along it: they are
   projected onto the feature line of the triangle mesh they started on; feature corners and
   constrained vertices do not move. A move that would add an incident quad with a scaled Jacobian
@@ -475,6 +476,35 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   auto has_home = get(CGAL::dynamic_vertex_property_t<int>(), qmesh);
   auto home_normal = get(CGAL::dynamic_vertex_property_t<Vector_3>(), qmesh);
   for(q_vertex v : vertices(qmesh)) put(has_home, v, 0);
+  // Where two components of the surface pass through each other (teapot's spout through its body), the
+  // closest point can be on the other component: a vertex keeps to the component it was placed on.
+  auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), tmesh);
+  auto home_component = get(CGAL::dynamic_vertex_property_t<std::size_t>(), qmesh);
+  {
+    const std::size_t unset = std::size_t(-1);
+    for(t_face f : faces(tmesh)) put(component, f, unset);
+    std::size_t next_component = 0;
+    std::vector<t_face> stack;
+    for(t_face seed : faces(tmesh))
+    {
+      if(get(component, seed) != unset) continue;
+      put(component, seed, next_component);
+      stack.push_back(seed);
+      while(!stack.empty())
+      {
+        const t_face f = stack.back();
+        stack.pop_back();
+        for(auto th : halfedges_around_face(halfedge(f, tmesh), tmesh))
+        {
+          const t_face g = face(opposite(th, tmesh), tmesh);
+          if(g == boost::graph_traits<TriangleMesh>::null_face() || get(component, g) != unset) continue;
+          put(component, g, next_component);
+          stack.push_back(g);
+        }
+      }
+      ++next_component;
+    }
+  }
   auto triangle_of = [&](t_face f) {
     const auto h = halfedge(f, tmesh);
     return typename K::Triangle_3(get(tvpm, source(h, tmesh)), get(tvpm, target(h, tmesh)),
@@ -488,6 +518,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // m * n > cos(75 degrees) |m| for the unit home normal n, squared so that the box search, which tests
   // every face in its box, takes no square root
   auto on_own_side = [&](t_face f, q_vertex v) {
+    if(get(component, f) != get(home_component, v)) return false;
     const double cos2_75_degrees = 0.2588 * 0.2588;
     const Vector_3 m = face_normal(f);
     const double dot = CGAL::to_double(m * get(home_normal, v));
@@ -499,6 +530,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       const Vector_3 m = face_normal(closest.second);
       const double length = std::sqrt(CGAL::to_double(m.squared_length()));
       put(home_normal, v, length > 0. ? m / length : m);
+      put(home_component, v, get(component, closest.second));
       put(has_home, v, 1);
       return closest.first;
     }
