@@ -171,8 +171,11 @@ Timing quantize_stage(const Prepared& p, bool use_solver, unsigned threads, bool
 {
   const Stopwatch t;
   const QR::internal::Quadrangulation_layout<Mesh, Layout> polygons(p.tm, *p.layout);
-  const auto problem = QR::internal::pipeline_quantization_problem(p.tm, *p.layout, polygons, p.feature, p.quad_edge_length,
-                                                                   0., QR::internal::default_feature_tolerance).problem;
+  const auto problem =
+    QR::internal::pipeline_quantization_problem(p.tm, *p.layout, polygons, p.feature, p.quad_edge_length,
+                                                QR::internal::default_sizing_tolerance,
+                                                QR::internal::default_feature_tolerance,
+                                                QR::internal::default_surface_tolerance).problem;
   std::vector<int> counts;
   const auto st = QR::quantize_patch_sides(problem, counts,
     QRP::combine(QRP::use_mip_solver(use_solver), QRP::number_of_threads(threads), CGAL::parameters::verbose(verbose)));
