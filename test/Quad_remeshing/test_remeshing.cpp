@@ -256,6 +256,39 @@ BOOST_AUTO_TEST_CASE(organic)
 
 BOOST_AUTO_TEST_CASE(open_mesh) { check_remeshing("hemisphere.off"); }
 
+// featuretype: a feature line makes a hairpin bend around the end of a slot, 0.03 wide, over edges much
+// shorter than the target (0.11). The uniform pass's collapses along the line kept only its two legs'
+// ends, and the remeshed line cut across the bend, 0.77% of the diagonal from the input's tip; the bends
+// farther than the remeshing tolerance (0.2% of the diagonal) from the simplified line are now held,
+// which keeps every input feature vertex within about that distance of the remeshed lines (0.31%).
+BOOST_AUTO_TEST_CASE(hairpin_feature_bend)
+{
+  Mesh m = load("featuretype.off");
+  const CGAL::Bbox_3 bb = PMP::bbox(m);
+  const double diag = std::sqrt(CGAL::square(bb.xmax() - bb.xmin()) + CGAL::square(bb.ymax() - bb.ymin()) +
+                                CGAL::square(bb.zmax() - bb.zmin()));
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  auto c = m.add_property_map<Mesh::Vertex_index, bool>("v:c", false).first;
+  QR::detect_feature_edges(m, f, QR::parameters::vertex_is_feature_corner_map(c));
+  std::vector<Point_3> feature_points;
+  for(auto v : m.vertices())
+    if(QR::internal::feature_degree(v, m, f) > 0) feature_points.push_back(m.point(v));
+  const QR::Remeshing_statistics st =
+    QR::remesh_for_quadrangulation(m, f, QR::parameters::vertex_is_feature_corner_map(c));
+  BOOST_CHECK_GT(st.bend_vertices_held, 0u);
+  Segments output_features;
+  for(auto e : m.edges())
+    if(f[e]) output_features.emplace_back(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e))));
+  Segment_tree tree(output_features.begin(), output_features.end());
+  tree.accelerate_distance_queries();
+  double worst = 0.;
+  for(const Point_3& p : feature_points) worst = (std::max)(worst, std::sqrt(tree.squared_distance(p)));
+  BOOST_TEST_MESSAGE("featuretype: " << st.bend_vertices_held << " bends held, input feature vertices within "
+                     << worst / diag << " of the diagonal from the remeshed lines");
+  // twice the tolerance: the split points of the remeshing lie on the input's segments, not on its vertices
+  BOOST_CHECK_LE(worst / diag, 4e-3);
+}
+
 // The uniform pass holds the sharp edges that are not features (spot's short sharp chains, which the
 // erosion leaves out of the features) by default: the remeshed surface keeps those creases, and they are
 // not features afterwards. Without holding them, the pass smooths most of them away.

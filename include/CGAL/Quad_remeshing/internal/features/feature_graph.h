@@ -10,8 +10,11 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -32,6 +35,44 @@ std::size_t feature_degree(typename boost::graph_traits<TriangleMesh>::vertex_de
   for(auto h : halfedges_around_target(v, tmesh))
     if(get(efm, edge(h, tmesh))) ++d;
   return d;
+}
+
+// The chains of feature edges between the vertices of `stops` (a set) walked from `starts` (its vertices, in
+// the order the chains are wanted), then the closed chains through none of them, each from one of its
+// vertices; each chain as its vertices in order (a closed one ends where it starts). A chain also ends at
+// a vertex of feature degree other than 2.
+template <typename TriangleMesh, typename EdgeIsFeatureMap, typename Vertex>
+std::vector<std::vector<Vertex>> feature_chains(const TriangleMesh& tmesh, const EdgeIsFeatureMap& efm,
+                                                const std::vector<Vertex>& starts, const std::set<Vertex>& stops)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+  std::set<edge_descriptor> visited;
+  std::vector<std::vector<Vertex>> chains;
+  // walks from `h` (whose source is where we come from) until a stop is reached
+  auto walk = [&](halfedge_descriptor h) {
+    std::vector<Vertex> chain(1, source(h, tmesh));
+    for(;;)
+    {
+      visited.insert(edge(h, tmesh));
+      const Vertex v = target(h, tmesh);
+      chain.push_back(v);
+      if(stops.count(v)) break;
+      halfedge_descriptor nxt = h;
+      bool found = false;
+      for(halfedge_descriptor g : halfedges_around_source(v, tmesh))
+        if(get(efm, edge(g, tmesh)) && edge(g, tmesh) != edge(h, tmesh)) { nxt = g; found = true; break; }
+      if(!found || visited.count(edge(nxt, tmesh))) break;
+      h = nxt;
+    }
+    chains.push_back(chain);
+  };
+  for(Vertex c : starts)
+    for(halfedge_descriptor h : halfedges_around_source(c, tmesh))
+      if(get(efm, edge(h, tmesh)) && !visited.count(edge(h, tmesh))) walk(h);
+  for(edge_descriptor e : edges(tmesh))
+    if(get(efm, e) && !visited.count(e)) walk(halfedge(e, tmesh));
+  return chains;
 }
 
 // Corners: feature degree 1 or > 2, or degree 2 with a turn sharper than `corner_angle` degrees.
@@ -64,39 +105,62 @@ Feature_graph_figures feature_corners_and_lines(const TriangleMesh& tmesh, const
     if(corner) { corners.push_back(v); corner_set.insert(v); }
   }
 
-  std::set<edge_descriptor> visited;
   for(edge_descriptor e : edges(tmesh))
     if(get(efm, e)) ++fig.feature_edges;
-
-  // walks from `h` (whose source is where we come from) until a corner is reached
-  auto walk = [&](halfedge_descriptor h) {
-    for(;;)
-    {
-      visited.insert(edge(h, tmesh));
-      const Vertex v = target(h, tmesh);
-      if(corner_set.count(v)) return;
-      halfedge_descriptor nxt = h;
-      bool found = false;
-      for(halfedge_descriptor g : halfedges_around_source(v, tmesh))
-        if(get(efm, edge(g, tmesh)) && edge(g, tmesh) != edge(h, tmesh)) { nxt = g; found = true; break; }
-      if(!found || visited.count(edge(nxt, tmesh))) return;
-      h = nxt;
-    }
-  };
-  for(Vertex c : corners)
-    for(halfedge_descriptor h : halfedges_around_source(c, tmesh))
-      if(get(efm, edge(h, tmesh)) && !visited.count(edge(h, tmesh)))
-      {
-        ++fig.feature_lines;
-        walk(h);
-      }
-  for(edge_descriptor e : edges(tmesh))
-    if(get(efm, e) && !visited.count(e))
-    {
-      ++fig.feature_lines; // a closed loop without corner
-      walk(halfedge(e, tmesh));
-    }
+  fig.feature_lines = feature_chains(tmesh, efm, corners, corner_set).size();
   return fig;
+}
+
+// The vertices where a feature chain between the vertices of `stops` bends away by more than `tolerance`
+// from the straight segment between its neighbours in a Douglas-Peucker simplification of the chain
+// (a closed chain is first split at its vertex farthest from where it starts); `stops` themselves are not
+// returned. Held in place by the remeshing, they keep a line that turns a lot over a few edges shorter
+// than the target length (a hairpin bend, the end of a slot) from being cut short by the collapses along
+// it, which keep only some of its vertices: between two held vertices, every input vertex stays within
+// about `tolerance` of the remeshed line.
+template <typename TriangleMesh, typename EdgeIsFeatureMap, typename VPM, typename Vertex>
+std::vector<Vertex> feature_bend_vertices(const TriangleMesh& tmesh, const EdgeIsFeatureMap& efm, const VPM& vpm,
+                                          const std::vector<Vertex>& stops, double tolerance)
+{
+  const std::set<Vertex> stop_set(stops.begin(), stops.end());
+  std::vector<Vertex> bends;
+  auto point = [&](Vertex v) {
+    const auto& p = get(vpm, v);
+    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  // squared distance from p to the segment [a, b]
+  auto sq_distance = [](const std::array<double, 3>& p, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    double ab[3], ap[3], ab2 = 0., t = 0.;
+    for(int i = 0; i < 3; ++i) { ab[i] = b[i] - a[i]; ap[i] = p[i] - a[i]; ab2 += ab[i] * ab[i]; t += ab[i] * ap[i]; }
+    t = ab2 > 0. ? (std::min)(1., (std::max)(0., t / ab2)) : 0.;
+    double d = 0.;
+    for(int i = 0; i < 3; ++i) d += (ap[i] - t * ab[i]) * (ap[i] - t * ab[i]);
+    return d;
+  };
+  const double tol2 = tolerance * tolerance;
+  for(const std::vector<Vertex>& chain : feature_chains(tmesh, efm, stops, stop_set))
+  {
+    std::vector<std::array<double, 3>> p;
+    for(Vertex v : chain) p.push_back(point(v));
+    std::vector<std::pair<std::size_t, std::size_t>> ranges(1, std::make_pair(std::size_t(0), p.size() - 1));
+    while(!ranges.empty())
+    {
+      const std::size_t i = ranges.back().first, j = ranges.back().second;
+      ranges.pop_back();
+      std::size_t far = i;
+      double far_d = tol2;
+      for(std::size_t k = i + 1; k < j; ++k)
+      {
+        const double d = sq_distance(p[k], p[i], p[j]);
+        if(d > far_d) { far = k; far_d = d; }
+      }
+      if(far == i) continue;
+      if(!stop_set.count(chain[far])) bends.push_back(chain[far]);
+      ranges.emplace_back(i, far);
+      ranges.emplace_back(far, j);
+    }
+  }
+  return bends;
 }
 
 template <typename TriangleMesh, typename Vertex>
