@@ -124,6 +124,13 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{Boolean}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
+    \cgalParamNBegin{remeshing_tolerance}
+      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`: the distance to the input, as a fraction of
+                            the bounding-box diagonal, beyond which the bends of the feature lines are held
+                            (and that the adaptive pass aims at)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.002`}
+    \cgalParamNEnd
     \cgalParamNBegin{curvature_alignment_weight}
       \cgalParamDescription{passed on to `compute_cross_field()`: the weight of the pull of the cross field towards
                             the principal curvature directions (0: the smoothest field)}
@@ -214,6 +221,8 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   report["remesh"] = remesh_for_quadrangulation(tm, feature,
     QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::adaptive_remeshing(adaptive),
                  QRP::hold_sharp_edges(hold_sharp),
+                 QRP::remeshing_tolerance(choose_parameter(get_parameter(np, internal_np::remeshing_tolerance),
+                                                           internal::default_remeshing_tolerance)),
                  QRP::feature_angle(angle), QRP::vertex_is_feature_corner_map(corner))).report();
   internal::collect_garbage(tm); // later stages index elements densely
 

@@ -202,6 +202,8 @@ double quad_edge_length_from_scale(const TriangleMesh& tmesh, double scale,
 
 namespace internal {
 
+constexpr double default_remeshing_tolerance = 0.002; // remesh_for_quadrangulation()'s `remeshing_tolerance`
+
 // The uniform pass's first split pass cuts every edge longer than 4/3 of the target, so a triangle with a
 // long edge `l` ends as up to about (l / target)^2 triangles, while the result has about
 // area / (sqrt(3)/4 target^2). The ratio of the two sums does not depend on the target and overstates the
@@ -521,7 +523,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
                                 " degenerate face(s) (collinear corners) that read_and_repair() could not remove");
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::remeshing_tolerance), 0.002);
+  const double tolerance =
+    choose_parameter(get_parameter(np, internal_np::remeshing_tolerance), internal::default_remeshing_tolerance);
   auto sizing_out = get_parameter(np, internal_np::vertex_sizing_map);
   constexpr bool has_sizing_map = !std::is_same<decltype(sizing_out), CGAL::internal_np::Param_not_found>::value;
   const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5u);
