@@ -15,6 +15,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -480,31 +481,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // closest point can be on the other component: a vertex keeps to the component it was placed on.
   auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), tmesh);
   auto home_component = get(CGAL::dynamic_vertex_property_t<std::size_t>(), qmesh);
-  {
-    const std::size_t unset = std::size_t(-1);
-    for(t_face f : faces(tmesh)) put(component, f, unset);
-    std::size_t next_component = 0;
-    std::vector<t_face> stack;
-    for(t_face seed : faces(tmesh))
-    {
-      if(get(component, seed) != unset) continue;
-      put(component, seed, next_component);
-      stack.push_back(seed);
-      while(!stack.empty())
-      {
-        const t_face f = stack.back();
-        stack.pop_back();
-        for(auto th : halfedges_around_face(halfedge(f, tmesh), tmesh))
-        {
-          const t_face g = face(opposite(th, tmesh), tmesh);
-          if(g == boost::graph_traits<TriangleMesh>::null_face() || get(component, g) != unset) continue;
-          put(component, g, next_component);
-          stack.push_back(g);
-        }
-      }
-      ++next_component;
-    }
-  }
+  CGAL::Polygon_mesh_processing::connected_components(tmesh, component);
   auto triangle_of = [&](t_face f) {
     const auto h = halfedge(f, tmesh);
     return typename K::Triangle_3(get(tvpm, source(h, tmesh)), get(tvpm, target(h, tmesh)),
