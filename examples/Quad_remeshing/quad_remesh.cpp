@@ -13,6 +13,7 @@
 #include <CGAL/Quad_remeshing/Patch_layout.h>
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/assembly_repairs.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/fidelity_refinement.h>
 #include <CGAL/Quad_remeshing/cross_field.h>
 #include <CGAL/Quad_remeshing/detect_feature_edges.h>
 #include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
@@ -64,6 +65,7 @@ bool stage_available(const std::string& name)
 const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
   "                   [--sizing-tolerance F] [--feature-tolerance F] [--surface-tolerance F]\n"
+  "                   [--fidelity-tolerance F]\n"
   "                   [--feature-angle DEG] [--feature-gap-angle DEG]\n"
   "                   [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
@@ -88,6 +90,11 @@ const char* usage_text =
   "  --surface-tolerance F quad edges across a bend of the surface (a fillet) stay within F times the\n"
   "                       bounding-box diagonal along the normal (default 0.002, 0 with --faces\n"
   "                       unless given; 0: no bound)\n"
+  "  --fidelity-tolerance F  the patches whose triangles stray farther than F times the bounding-box\n"
+  "                       diagonal from their quads get half as many quads again along each side (at\n"
+  "                       most 2 rounds, the second if the first added at most a fifth of the quads;\n"
+  "                       kept if closer by a tenth and at most 1.5 times the quads;\n"
+  "                       default 0.004, 0 with --faces unless given; 0: none)\n"
   "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
   "  --feature-gap-angle DEG  dihedral angle above which a few edges continuing a feature line\n"
   "                       across a gap, to another feature edge, are features too (default: the\n"
@@ -127,7 +134,8 @@ struct Options
   double edge_length = 0., scale = 1., feature_angle = 35., feature_gap_angle = -1., time_limit = 0.,
          sizing_tolerance = -1., // negative: the default, see sizing()
          feature_tolerance = QR::internal::default_feature_tolerance,
-         surface_tolerance = -1.; // negative: the default, see surface()
+         surface_tolerance = -1., // negative: the default, see surface()
+         fidelity_tolerance = -1.; // negative: the default, see fidelity()
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true;
@@ -144,6 +152,12 @@ struct Options
   {
     if(surface_tolerance >= 0.) return surface_tolerance;
     return faces > 0 ? 0. : QR::internal::default_surface_tolerance;
+  }
+  // the fidelity tolerance in use, the same way
+  double fidelity() const
+  {
+    if(fidelity_tolerance >= 0.) return fidelity_tolerance;
+    return faces > 0 ? 0. : QR::internal::default_fidelity_tolerance;
   }
 };
 
@@ -197,6 +211,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--sizing-tolerance") o.sizing_tolerance = parse_number(a, value(), 0.);
     else if(a == "--feature-tolerance") o.feature_tolerance = parse_number(a, value(), 0.);
     else if(a == "--surface-tolerance") o.surface_tolerance = parse_number(a, value(), 0.);
+    else if(a == "--fidelity-tolerance") o.fidelity_tolerance = parse_number(a, value(), 0.);
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
     else if(a == "--no-hold-sharp-edges") o.hold_sharp_edges = false;
@@ -535,12 +550,47 @@ private:
 
   QR::Report stage_smooth()
   {
-    const QR::Quad_smoothing_statistics st = QR::smooth_quad_mesh(
+    CGAL::Real_timer timer;
+    timer.start();
+    QR::Quad_smoothing_statistics st = QR::smooth_quad_mesh(
       state_.qmesh, state_.tmesh, state_.feature,
       CGAL::parameters::edge_is_constrained_map(state_.qfeature).verbose(opt_.verbose).maximum_running_time(
         budget_.stage_limit(QR::internal::smooth_time_share)));
     budget_.record("smooth", st.report());
-    return st.report();
+    QR::Report r = st.report();
+
+    // where the smoothed quads stray from the surface, more quads (see QR::internal::refine_for_fidelity();
+    // quad_remesh() does the same)
+    const double diagonal = QR::internal::mesh_bbox_diagonal(state_.tmesh);
+    if(opt_.fidelity() > 0. && budget_.limited() && budget_.left() < 3. * timer.time())
+    {
+      budget_.degraded("smooth", "no time left for more quads where the quads stray from the surface");
+      r["fidelity"]["skipped_for_time_limit"] = true;
+      return r;
+    }
+    const auto description =
+      QR::internal::layout_description(state_.tmesh, *state_.layout, *state_.polygons, state_.feature);
+    auto solve_counts = [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) { return solve(problem, counts); };
+    auto make = [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts, Quad_mesh& out) {
+      auto out_feature = out.add_property_map<Quad_mesh::Edge_index, bool>("e:qr_feature", false).first;
+      QR::internal::assemble_with_count_repairs(state_.tmesh, description, problem, counts, solve_counts, out,
+                                                out_feature, false);
+      st = QR::smooth_quad_mesh(out, state_.tmesh, state_.feature,
+                                CGAL::parameters::edge_is_constrained_map(out_feature).maximum_running_time(
+                                  budget_.stage_limit(QR::internal::smooth_time_share)));
+    };
+    QR::Report kept_smoothing = r;
+    auto keep = [&](Quad_mesh& better) {
+      state_.qmesh = std::move(better);
+      state_.qfeature = state_.qmesh.property_map<Quad_mesh::Edge_index, bool>("e:qr_feature").first;
+      kept_smoothing = st.report();
+    };
+    const QR::internal::Fidelity_refinement_statistics fs = QR::internal::refine_for_fidelity(
+      state_.tmesh, description, state_.quantization_problem, state_.arc_edge_counts, solve_counts, make, keep,
+      state_.qmesh, opt_.fidelity() * diagonal, opt_.verbose);
+    r = kept_smoothing;
+    r["fidelity"] = fs.report(diagonal);
+    return r;
   }
 
   void write_output()

@@ -130,5 +130,8 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(feature_tolerance_t, feature_tolerance, 
 /// bounding-box diagonal along the surface normal (`double`, 0 = no bound): the quantization gives an arc
 /// over a bend of the surface enough edges
 CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(surface_tolerance_t, surface_tolerance, surface_tolerance)
+/// the patches whose triangles stray farther than this fraction of the bounding-box diagonal from their
+/// assembled quads get more quads (`double`, 0 = no such refinement)
+CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(fidelity_tolerance_t, fidelity_tolerance, fidelity_tolerance)
 
 #endif // CGAL_QUAD_REMESHING_PARAMETERS_H

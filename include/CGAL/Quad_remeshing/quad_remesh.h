@@ -20,10 +20,13 @@
 #include <CGAL/Quad_remeshing/internal/pipeline/assembly_repairs.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_count.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/fidelity_refinement.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/time_budget.h>
 
 #include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -53,7 +56,12 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
   `assemble_quad_mesh()` and `smooth_quad_mesh()`. Where the patterns of some patches cannot be glued
   (`Quad_assembly_conflict`), the arcs of those patches get more edges and the counts are solved again
   (at most 4 times; the `quadrangulate` record's `count_repairs` and `repaired_patches` say how often
-  and for how many patches).
+  and for how many patches). Last, where the smoothed quads stray from the triangle mesh farther than
+  `fidelity_tolerance` (a tip thinner than a quad cut short, quads across a groove), the arcs of those
+  patches get half as many edges again, the counts are solved again and the quads assembled and smoothed
+  again; the new quads replace the old ones if they are closer by a tenth at least and at most 1.5 times
+  as many as the first (at most 2 rounds, the second only if the first added at most a fifth of the
+  quads; the `fidelity` record says what was done).
 
   \code{.cpp}
   Mesh tmesh, qmesh;
@@ -111,6 +119,18 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
                             the measured effect). 0: no such bound}
       \cgalParamType{`double`}
       \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
+    \cgalParamNEnd
+    \cgalParamNBegin{fidelity_tolerance}
+      \cgalParamDescription{if positive, the patches whose triangles are farther than this fraction of the
+                            bounding-box diagonal from the smoothed quads, or whose quads are farther from
+                            them (measured at the vertices of the triangles and at the centre and edge midpoints
+                            of the quads), get half as many quads again along each arc, and the quads are made
+                            again; they are kept if they are closer by a tenth at least and at most 1.5 times as
+                            many as the first quads. At most 2 rounds, the second only if the first added
+                            at most a fifth of the quads.
+                            0: no such refinement}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.004` (`0` with `number_of_quads`)}
     \cgalParamNEnd
     \cgalParamNBegin{adaptive_remeshing}
       \cgalParamDescription{whether `remesh_for_quadrangulation()` runs its adaptive pass after the uniform one
@@ -282,10 +302,39 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   report["quadrangulate"]["repaired_patches"] = assembly.repaired_patches;
 
   progress("smooth");
+  CGAL::Real_timer smoothing;
+  smoothing.start();
   report["smooth"] = smooth_quad_mesh(qmesh, tm, feature,
                                       CGAL::parameters::edge_is_constrained_map(qfeature).verbose(verbose)
                                         .maximum_running_time(budget.stage_limit(internal::smooth_time_share))).report();
   budget.record("smooth", report["smooth"]);
+
+  progress("fidelity");
+  // where the smoothed quads stray from the surface, more quads (see internal::refine_for_fidelity())
+  const double fidelity = choose_parameter(get_parameter(np, internal_np::fidelity_tolerance),
+                                           wanted_quads > 0 ? 0. : internal::default_fidelity_tolerance);
+  const double rebuild_seconds = assembly.stats.seconds + smoothing.time();
+  if(fidelity > 0. && budget.limited() && budget.left() < 3. * rebuild_seconds)
+  {
+    budget.degraded("fidelity", "no time left for more quads where the quads stray from the surface");
+    report["fidelity"]["skipped_for_time_limit"] = true;
+  }
+  else
+  {
+    auto make = [&](const Side_quantization_problem& problem, std::vector<int>& c, QuadMesh& out) {
+      auto out_feature = get(CGAL::dynamic_edge_property_t<bool>(), out);
+      internal::assemble_with_count_repairs(tm, description, problem, c, solve, out, out_feature, false);
+      smooth_quad_mesh(out, tm, feature, CGAL::parameters::edge_is_constrained_map(out_feature)
+                                           .maximum_running_time(budget.stage_limit(internal::smooth_time_share)));
+    };
+    auto keep = [&](QuadMesh& better) {
+      CGAL::clear(qmesh);
+      CGAL::copy_face_graph(better, qmesh);
+    };
+    const internal::Fidelity_refinement_statistics fs = internal::refine_for_fidelity(
+      tm, description, qp.problem, counts, solve, make, keep, qmesh, fidelity * internal::mesh_bbox_diagonal(tm), verbose);
+    report["fidelity"] = fs.report(internal::mesh_bbox_diagonal(tm));
+  }
   report["time_limit"] = budget.report();
   report["seconds"] = timer.time();
   return report;

@@ -333,6 +333,7 @@ int chord_minimum(const std::vector<Point>& p, double tolerance, int cap, const 
 constexpr double default_feature_tolerance = 0.002; // quad_remesh()'s `feature_tolerance`
 constexpr double default_sizing_tolerance = 0.002;  // quad_remesh()'s `sizing_tolerance`
 constexpr double default_surface_tolerance = 0.002; // quad_remesh()'s `surface_tolerance`
+constexpr double default_fidelity_tolerance = 0.004; // quad_remesh()'s `fidelity_tolerance`
 
 // Raises the minimum edge count of arcs so that their quad edges, placed at equal arc-length steps as the
 // assembly does, follow them: an arc along a feature line (the boundary included) within

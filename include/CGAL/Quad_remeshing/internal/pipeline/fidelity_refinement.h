@@ -1,0 +1,244 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The pipeline's last step: patches whose smoothed quads stray from the surface get more quads, and the
+// result is kept if it is closer (quad_remesh() and the command line share it).
+
+#ifndef CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_FIDELITY_REFINEMENT_H
+#define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_FIDELITY_REFINEMENT_H
+
+#include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/quantize_patch_sides.h>
+#include <CGAL/Quad_remeshing/Report.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <iostream>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+/*
+  How far the quad mesh `qmesh` is from each patch of `d` on the triangle mesh `tm`, both ways: from
+  the vertices of the patch's triangles to the quads (a tip of the patch cut short, quads across a
+  bend), and from points of the quads (the centre and the edge midpoints of each quad, each quad split
+  along its shorter diagonal as the evaluators do) to the triangles, each such distance counting for
+  the patch of the triangle nearest to it (a quad bridging a groove).
+*/
+template <typename TriangleMesh, typename QuadMesh>
+std::vector<double> patch_distances_to_quads(const TriangleMesh& tm, const Patch_layout_description<TriangleMesh>& d,
+                                             const QuadMesh& qmesh)
+{
+  typedef typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel K;
+  typedef typename K::Triangle_3 Triangle;
+  typedef CGAL::AABB_triangle_primitive<K, typename std::vector<Triangle>::const_iterator> Quad_primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Quad_primitive>> Quad_tree;
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh> Tri_primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Tri_primitive>> Tri_tree;
+
+  std::vector<double> distance(d.patches.size(), 0.);
+  const auto qvpm = get(CGAL::vertex_point, qmesh);
+  std::vector<Triangle> triangles;
+  std::vector<Point> samples;
+  for(auto f : faces(qmesh))
+  {
+    std::vector<Point> p;
+    for(auto v : vertices_around_face(halfedge(f, qmesh), qmesh))
+    {
+      const auto& q = get(qvpm, v);
+      p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    }
+    if(p.size() < 3) continue;
+    std::size_t first = 0;
+    if(p.size() == 4 && CGAL::squared_distance(p[1], p[3]) < CGAL::squared_distance(p[0], p[2])) first = 1;
+    for(std::size_t i = 1; i + 1 < p.size(); ++i)
+    {
+      const Point &a = p[first], &b = p[(first + i) % p.size()], &c = p[(first + i + 1) % p.size()];
+      if(!CGAL::collinear(a, b, c)) triangles.emplace_back(a, b, c);
+    }
+    Point centre = CGAL::ORIGIN + (p[0] - CGAL::ORIGIN) / double(p.size());
+    for(std::size_t i = 1; i < p.size(); ++i) centre = centre + (p[i] - CGAL::ORIGIN) / double(p.size());
+    samples.push_back(centre);
+    for(std::size_t i = 0; i < p.size(); ++i) samples.push_back(CGAL::midpoint(p[i], p[(i + 1) % p.size()]));
+  }
+  if(triangles.empty() || d.patches.empty()) return distance;
+
+  // from the triangle mesh to the quads
+  Quad_tree quads(triangles.begin(), triangles.end());
+  quads.accelerate_distance_queries();
+  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto vim = get(CGAL::vertex_index, tm);
+  const auto fim = get(CGAL::face_index, tm);
+  std::size_t vertex_slots = 0, face_slots = 0; // (indices are dense only without removed elements)
+  for(auto v : vertices(tm)) vertex_slots = (std::max)(vertex_slots, std::size_t(get(vim, v)) + 1);
+  for(auto f : faces(tm)) face_slots = (std::max)(face_slots, std::size_t(get(fim, f)) + 1);
+  std::vector<double> at_vertex(vertex_slots, -1.);
+  std::vector<std::size_t> patch_of(face_slots, d.patches.size());
+  for(std::size_t p = 0; p < d.patches.size(); ++p)
+    for(auto f : d.patches[p].faces)
+    {
+      patch_of[std::size_t(get(fim, f))] = p;
+      for(auto v : vertices_around_face(halfedge(f, tm), tm))
+      {
+        double& x = at_vertex[std::size_t(get(vim, v))];
+        if(x < 0.) x = std::sqrt(CGAL::to_double(quads.squared_distance(get(vpm, v))));
+        distance[p] = (std::max)(distance[p], x);
+      }
+    }
+
+  // from the quads to the triangle mesh
+  Tri_tree surface(faces(tm).first, faces(tm).second, tm);
+  surface.accelerate_distance_queries();
+  for(const Point& s : samples)
+  {
+    const auto hit = surface.closest_point_and_primitive(s);
+    const std::size_t p = patch_of[std::size_t(get(fim, hit.second))];
+    if(p < distance.size())
+      distance[p] = (std::max)(distance[p], std::sqrt(CGAL::to_double(CGAL::squared_distance(s, hit.first))));
+  }
+  return distance;
+}
+
+struct Fidelity_refinement_statistics
+{
+  double tolerance = 0.;        // absolute
+  std::size_t rounds = 0;       // quad meshes made again
+  std::size_t kept = 0;         // of which were closer and kept
+  std::size_t refined_patches = 0;
+  bool second_round_skipped = false; // the first round added too many quads for a second
+  double distance_before = 0.;  // largest patch distance of the first quad mesh (absolute)
+  double distance_after = 0.;   // of the quad mesh kept
+  double seconds = 0.;
+
+  // the figures as a report record, the distances as fractions of `diagonal`
+  Report report(double diagonal) const
+  {
+    Report r = Report::object();
+    r["tolerance"] = diagonal > 0. ? tolerance / diagonal : 0.;
+    r["rounds"] = rounds;
+    r["kept"] = kept;
+    r["refined_patches"] = refined_patches;
+    r["second_round_skipped"] = second_round_skipped;
+    r["distance_before"] = diagonal > 0. ? distance_before / diagonal : 0.;
+    r["distance_after"] = diagonal > 0. ? distance_after / diagonal : 0.;
+    r["seconds"] = seconds;
+    return r;
+  }
+};
+
+constexpr std::size_t max_fidelity_rounds = 2;
+// more quads are kept only if they bring the largest distance down by a tenth at least: a round adds
+// whole strips of quads across the mesh (face: 60% more quads), not worth a closeness the evaluators
+// cannot tell from the old one
+constexpr double keep_below = 0.9;
+// nor if they are more than this many times the first quads: the arcs raised in a patch add strips of
+// quads that run across the whole mesh, and two rounds took a box of 445 quads to 1712
+constexpr double max_fidelity_growth = 1.5;
+// and a second round only if the first added at most a fifth: each round makes the quads again, and on
+// truck, whose first round added 32%, the second took 14 s and was not kept
+constexpr double max_growth_for_second_round = 1.2;
+
+/*
+  `current` is the smoothed quad mesh of the arc counts `counts`, solutions of `problem` (arcs and
+  patches of `d`). While some patch is farther than `tolerance` (absolute) from it
+  (patch_distances_to_quads()), at most max_fidelity_rounds times: the arcs of those patches get a
+  minimum of half as many edges again as they have, `solve(problem, counts)` solves again, and
+  `make(problem, counts, candidate)` assembles and smooths the quads of the new counts into the empty
+  `candidate` (it may change `counts`, e.g. for the count repairs of the assembly). The candidate is
+  handed to `keep(candidate)` (which replaces `current` with it) if its largest distance is smaller by a
+  tenth (keep_below) and it has at most max_fidelity_growth times the quads of `current` at the start;
+  otherwise the refinement stops. The second round starts only if the quads kept have at most
+  max_growth_for_second_round times the first ones. The sizing field sees the curvature of the triangle mesh only: it
+  cannot tell that a patch's quads cut a thin tip short, nor where the smoothing pulls them off it.
+  `counts` ends with the counts of the quads kept. A failure of a later assembly keeps `current`.
+*/
+template <typename TriangleMesh, typename QuadMesh, typename Solve, typename Make, typename Keep>
+Fidelity_refinement_statistics refine_for_fidelity(const TriangleMesh& tm, const Patch_layout_description<TriangleMesh>& d,
+                                                   Side_quantization_problem problem, std::vector<int>& counts,
+                                                   const Solve& solve, const Make& make, const Keep& keep,
+                                                   const QuadMesh& current, double tolerance, bool verbose)
+{
+  Fidelity_refinement_statistics st;
+  st.tolerance = tolerance;
+  if(!(tolerance > 0.)) return st;
+  CGAL::Real_timer timer;
+  timer.start();
+  std::vector<double> distance = patch_distances_to_quads(tm, d, current);
+  double worst = distance.empty() ? 0. : *std::max_element(distance.begin(), distance.end());
+  st.distance_before = st.distance_after = worst;
+  std::vector<bool> refined(d.patches.size(), false);
+  const std::size_t first_faces = std::size_t(num_faces(current));
+  while(st.rounds < max_fidelity_rounds && worst > tolerance)
+  {
+    if(st.rounds > 0 && double(num_faces(current)) > max_growth_for_second_round * double(first_faces))
+    {
+      st.second_round_skipped = true;
+      break;
+    }
+    std::size_t far = 0;
+    for(std::size_t p = 0; p < d.patches.size(); ++p)
+    {
+      if(!(distance[p] > tolerance)) continue;
+      ++far;
+      if(!refined[p]) ++st.refined_patches;
+      refined[p] = true;
+      for(const auto& side : problem.patches[p])
+        for(std::size_t a : side)
+          if(problem.arcs[a].fixed == 0)
+            problem.arcs[a].minimum = (std::max)(problem.arcs[a].minimum, counts[a] + (std::max)(1, counts[a] / 2));
+    }
+    ++st.rounds;
+    std::vector<int> c = counts;
+    QuadMesh candidate;
+    std::vector<double> candidate_distance;
+    try
+    {
+      solve(problem, c);
+      make(problem, c, candidate);
+      candidate_distance = patch_distances_to_quads(tm, d, candidate);
+    }
+    catch(const std::exception& e)
+    {
+      if(verbose) std::cerr << "[fidelity] more quads on " << far << " patches failed (" << e.what() << "): kept the quads before\n";
+      break;
+    }
+    const double candidate_worst =
+      candidate_distance.empty() ? 0. : *std::max_element(candidate_distance.begin(), candidate_distance.end());
+    const bool closer = candidate_worst < keep_below * worst;
+    const bool affordable = double(num_faces(candidate)) <= max_fidelity_growth * double(first_faces);
+    if(verbose)
+      std::cerr << "[fidelity] " << far << " patches farther than " << tolerance << " from their quads (at most "
+                << worst << "): with more quads (" << num_faces(candidate) << ") " << candidate_worst
+                << (!closer ? ", not closer by a tenth: not kept\n"
+                            : !affordable ? ", but more than 1.5 times the first quads: not kept\n" : ", kept\n");
+    if(!closer || !affordable) break;
+    keep(candidate);
+    ++st.kept;
+    counts = c;
+    distance = candidate_distance;
+    worst = candidate_worst;
+    st.distance_after = worst;
+  }
+  st.seconds = timer.time();
+  return st;
+}
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_FIDELITY_REFINEMENT_H
