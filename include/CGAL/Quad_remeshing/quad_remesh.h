@@ -331,9 +331,10 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
       CGAL::clear(qmesh);
       CGAL::copy_face_graph(better, qmesh);
     };
+    const double diagonal = internal::mesh_bbox_diagonal(tm);
     const internal::Fidelity_refinement_statistics fs = internal::refine_for_fidelity(
-      tm, description, qp.problem, counts, solve, make, keep, qmesh, fidelity * internal::mesh_bbox_diagonal(tm), verbose);
-    report["fidelity"] = fs.report(internal::mesh_bbox_diagonal(tm));
+      tm, description, qp.problem, counts, solve, make, keep, qmesh, fidelity * diagonal, verbose);
+    report["fidelity"] = fs.report(diagonal);
   }
   report["time_limit"] = budget.report();
   report["seconds"] = timer.time();

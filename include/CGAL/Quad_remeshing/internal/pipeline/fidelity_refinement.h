@@ -8,6 +8,7 @@
 #define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_FIDELITY_REFINEMENT_H
 
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
+#include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 #include <CGAL/Quad_remeshing/quantize_patch_sides.h>
 #include <CGAL/Quad_remeshing/Report.h>
 
@@ -31,15 +32,16 @@ namespace Quad_remeshing {
 namespace internal {
 
 /*
-  How far the quad mesh `qmesh` is from each patch of `d` on the triangle mesh `tm`, both ways: from
-  the vertices of the patch's triangles to the quads (a tip of the patch cut short, quads across a
-  bend), and from points of the quads (the centre and the edge midpoints of each quad, each quad split
-  along its shorter diagonal as the evaluators do) to the triangles, each such distance counting for
-  the patch of the triangle nearest to it (a quad bridging a groove).
+  How far a quad mesh is from each patch of `d` on the triangle mesh `tm`, both ways: from the vertices
+  of the patch's triangles to the quads (a tip of the patch cut short, quads across a bend), and from
+  points of the quads (the centre and the edge midpoints of each quad) to the triangles, each such
+  distance counting for the patch of the triangle nearest to it (a quad bridging a groove). The quads are
+  triangulated as the package's quality measures do (internal::quality::triangulate_soup(): a quad along
+  its shorter diagonal). The tree of `tm` and the patch of each face are built once, for every quad
+  mesh measured.
 */
-template <typename TriangleMesh, typename QuadMesh>
-std::vector<double> patch_distances_to_quads(const TriangleMesh& tm, const Patch_layout_description<TriangleMesh>& d,
-                                             const QuadMesh& qmesh)
+template <typename TriangleMesh>
+class Patch_distances_to_quads
 {
   typedef typename boost::property_traits<
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
@@ -50,68 +52,73 @@ std::vector<double> patch_distances_to_quads(const TriangleMesh& tm, const Patch
   typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh> Tri_primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Tri_primitive>> Tri_tree;
 
-  std::vector<double> distance(d.patches.size(), 0.);
-  const auto qvpm = get(CGAL::vertex_point, qmesh);
-  std::vector<Triangle> triangles;
-  std::vector<Point> samples;
-  for(auto f : faces(qmesh))
+public:
+  Patch_distances_to_quads(const TriangleMesh& tm, const Patch_layout_description<TriangleMesh>& d)
+    : tm_(tm), d_(d), surface_(faces(tm).first, faces(tm).second, tm)
   {
-    std::vector<Point> p;
-    for(auto v : vertices_around_face(halfedge(f, qmesh), qmesh))
-    {
-      const auto& q = get(qvpm, v);
-      p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    }
-    if(p.size() < 3) continue;
-    std::size_t first = 0;
-    if(p.size() == 4 && CGAL::squared_distance(p[1], p[3]) < CGAL::squared_distance(p[0], p[2])) first = 1;
-    for(std::size_t i = 1; i + 1 < p.size(); ++i)
-    {
-      const Point &a = p[first], &b = p[(first + i) % p.size()], &c = p[(first + i + 1) % p.size()];
-      if(!CGAL::collinear(a, b, c)) triangles.emplace_back(a, b, c);
-    }
-    Point centre = CGAL::ORIGIN + (p[0] - CGAL::ORIGIN) / double(p.size());
-    for(std::size_t i = 1; i < p.size(); ++i) centre = centre + (p[i] - CGAL::ORIGIN) / double(p.size());
-    samples.push_back(centre);
-    for(std::size_t i = 0; i < p.size(); ++i) samples.push_back(CGAL::midpoint(p[i], p[(i + 1) % p.size()]));
+    surface_.accelerate_distance_queries();
+    const auto vim = get(CGAL::vertex_index, tm);
+    const auto fim = get(CGAL::face_index, tm);
+    std::size_t face_slots = 0; // (indices are dense only without removed elements)
+    for(auto v : vertices(tm)) vertex_slots_ = (std::max)(vertex_slots_, std::size_t(get(vim, v)) + 1);
+    for(auto f : faces(tm)) face_slots = (std::max)(face_slots, std::size_t(get(fim, f)) + 1);
+    patch_of_.assign(face_slots, d.patches.size());
+    for(std::size_t p = 0; p < d.patches.size(); ++p)
+      for(auto f : d.patches[p].faces) patch_of_[std::size_t(get(fim, f))] = p;
   }
-  if(triangles.empty() || d.patches.empty()) return distance;
 
-  // from the triangle mesh to the quads
-  Quad_tree quads(triangles.begin(), triangles.end());
-  quads.accelerate_distance_queries();
-  const auto vpm = get(CGAL::vertex_point, tm);
-  const auto vim = get(CGAL::vertex_index, tm);
-  const auto fim = get(CGAL::face_index, tm);
-  std::size_t vertex_slots = 0, face_slots = 0; // (indices are dense only without removed elements)
-  for(auto v : vertices(tm)) vertex_slots = (std::max)(vertex_slots, std::size_t(get(vim, v)) + 1);
-  for(auto f : faces(tm)) face_slots = (std::max)(face_slots, std::size_t(get(fim, f)) + 1);
-  std::vector<double> at_vertex(vertex_slots, -1.);
-  std::vector<std::size_t> patch_of(face_slots, d.patches.size());
-  for(std::size_t p = 0; p < d.patches.size(); ++p)
-    for(auto f : d.patches[p].faces)
-    {
-      patch_of[std::size_t(get(fim, f))] = p;
-      for(auto v : vertices_around_face(halfedge(f, tm), tm))
-      {
-        double& x = at_vertex[std::size_t(get(vim, v))];
-        if(x < 0.) x = std::sqrt(CGAL::to_double(quads.squared_distance(get(vpm, v))));
-        distance[p] = (std::max)(distance[p], x);
-      }
-    }
-
-  // from the quads to the triangle mesh
-  Tri_tree surface(faces(tm).first, faces(tm).second, tm);
-  surface.accelerate_distance_queries();
-  for(const Point& s : samples)
+  // the distance of each patch of `d` to `qmesh` (absolute)
+  template <typename QuadMesh>
+  std::vector<double> operator()(const QuadMesh& qmesh) const
   {
-    const auto hit = surface.closest_point_and_primitive(s);
-    const std::size_t p = patch_of[std::size_t(get(fim, hit.second))];
-    if(p < distance.size())
-      distance[p] = (std::max)(distance[p], std::sqrt(CGAL::to_double(CGAL::squared_distance(s, hit.first))));
+    std::vector<double> distance(d_.patches.size(), 0.);
+    std::vector<Point> points;
+    quality::Index_polygons polygons;
+    quality::mesh_to_soup(qmesh, get(CGAL::vertex_point, qmesh), points, polygons);
+    const std::vector<Triangle> triangles = quality::triangulate_soup<K>(points, polygons);
+    if(triangles.empty() || d_.patches.empty()) return distance;
+
+    // from the triangle mesh to the quads
+    Quad_tree quads(triangles.begin(), triangles.end());
+    quads.accelerate_distance_queries();
+    const auto vpm = get(CGAL::vertex_point, tm_);
+    const auto vim = get(CGAL::vertex_index, tm_);
+    std::vector<double> at_vertex(vertex_slots_, -1.);
+    for(std::size_t p = 0; p < d_.patches.size(); ++p)
+      for(auto f : d_.patches[p].faces)
+        for(auto v : vertices_around_face(halfedge(f, tm_), tm_))
+        {
+          double& x = at_vertex[std::size_t(get(vim, v))];
+          if(x < 0.) x = std::sqrt(CGAL::to_double(quads.squared_distance(get(vpm, v))));
+          distance[p] = (std::max)(distance[p], x);
+        }
+
+    // from the quads (centre and edge midpoints) to the triangle mesh
+    const auto fim = get(CGAL::face_index, tm_);
+    auto measure = [&](const Point& s) {
+      const auto hit = surface_.closest_point_and_primitive(s);
+      const std::size_t p = patch_of_[std::size_t(get(fim, hit.second))];
+      if(p < distance.size())
+        distance[p] = (std::max)(distance[p], std::sqrt(CGAL::to_double(CGAL::squared_distance(s, hit.first))));
+    };
+    for(const std::vector<std::size_t>& f : polygons)
+    {
+      if(f.size() < 3) continue;
+      typename K::Vector_3 sum = CGAL::NULL_VECTOR;
+      for(std::size_t i : f) sum = sum + (points[i] - CGAL::ORIGIN);
+      measure(CGAL::ORIGIN + sum / double(f.size()));
+      for(std::size_t i = 0; i < f.size(); ++i) measure(CGAL::midpoint(points[f[i]], points[f[(i + 1) % f.size()]]));
+    }
+    return distance;
   }
-  return distance;
-}
+
+private:
+  const TriangleMesh& tm_;
+  const Patch_layout_description<TriangleMesh>& d_;
+  Tri_tree surface_;
+  std::size_t vertex_slots_ = 0;
+  std::vector<std::size_t> patch_of_; // the patch of each face index (d.patches.size(): none)
+};
 
 struct Fidelity_refinement_statistics
 {
@@ -155,7 +162,7 @@ constexpr double max_growth_for_second_round = 1.2;
 /*
   `current` is the smoothed quad mesh of the arc counts `counts`, solutions of `problem` (arcs and
   patches of `d`). While some patch is farther than `tolerance` (absolute) from it
-  (patch_distances_to_quads()), at most max_fidelity_rounds times: the arcs of those patches get a
+  (Patch_distances_to_quads), at most max_fidelity_rounds times: the arcs of those patches get a
   minimum of half as many edges again as they have, `solve(problem, counts)` solves again, and
   `make(problem, counts, candidate)` assembles and smooths the quads of the new counts into the empty
   `candidate` (it may change `counts`, e.g. for the count repairs of the assembly). The candidate is
@@ -177,7 +184,8 @@ Fidelity_refinement_statistics refine_for_fidelity(const TriangleMesh& tm, const
   if(!(tolerance > 0.)) return st;
   CGAL::Real_timer timer;
   timer.start();
-  std::vector<double> distance = patch_distances_to_quads(tm, d, current);
+  const Patch_distances_to_quads<TriangleMesh> patch_distances(tm, d);
+  std::vector<double> distance = patch_distances(current);
   double worst = distance.empty() ? 0. : *std::max_element(distance.begin(), distance.end());
   st.distance_before = st.distance_after = worst;
   std::vector<bool> refined(d.patches.size(), false);
@@ -209,7 +217,7 @@ Fidelity_refinement_statistics refine_for_fidelity(const TriangleMesh& tm, const
     {
       solve(problem, c);
       make(problem, c, candidate);
-      candidate_distance = patch_distances_to_quads(tm, d, candidate);
+      candidate_distance = patch_distances(candidate);
     }
     catch(const std::exception& e)
     {
