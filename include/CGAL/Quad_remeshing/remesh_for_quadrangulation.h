@@ -378,9 +378,10 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
   end only the edges on an input feature line are features again (an edge goes to the nearer of the two
   kinds of input line). Without the adaptive pass, the vertices where a constrained line bends away
   by more than `remeshing_tolerance` from a Douglas-Peucker simplification of it (between its corners,
-  ends and junctions) are held too: the collapses along a line keep only some of its vertices, and a line
-  that turns a lot over edges shorter than the target (a hairpin bend around the end of a slot) was cut
-  short (featuretype: 0.77% of the diagonal). With the adaptive pass, after the refinements, the lines are put back where collapses along them left chords: while an input line point
+  ends and junctions; a closed loop without any is split at two of its vertices far apart, both held) are
+  held too: the collapses along a line keep only some of its vertices, and a line that turns a lot over
+  edges shorter than the target (a hairpin bend around the end of a slot) was cut short (featuretype:
+  0.77% of the diagonal), as was the tip of a narrow closed loop (teapot's spout opening: 0.51%). With the adaptive pass, after the refinements, the lines are put back where collapses along them left chords: while an input line point
   (vertex or edge midpoint) is farther than a quarter of `remeshing_tolerance` from every constrained
   edge, the nearest one is split at that point (up to 8 rounds; not near an endpoint, never folding a face).
 

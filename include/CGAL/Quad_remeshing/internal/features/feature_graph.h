@@ -113,11 +113,11 @@ Feature_graph_figures feature_corners_and_lines(const TriangleMesh& tmesh, const
 
 // The vertices where a feature chain between the vertices of `stops` bends away by more than `tolerance`
 // from the straight segment between its neighbours in a Douglas-Peucker simplification of the chain
-// (a closed chain is first split at its vertex farthest from where it starts); `stops` themselves are not
-// returned. Held in place by the remeshing, they keep a line that turns a lot over a few edges shorter
-// than the target length (a hairpin bend, the end of a slot) from being cut short by the collapses along
-// it, which keep only some of its vertices: between two held vertices, every input vertex stays within
-// about `tolerance` of the remeshed line.
+// (a closed chain through no stop is first split at two of its vertices far apart, both returned);
+// `stops` themselves are not returned. Held in place by the remeshing, they keep a line that turns a lot
+// over a few edges shorter than the target length (a hairpin bend, the end of a slot) from being cut
+// short by the collapses along it, which keep only some of its vertices: between two held vertices,
+// every input vertex stays within about `tolerance` of the remeshed line.
 template <typename TriangleMesh, typename EdgeIsFeatureMap, typename VPM, typename Vertex>
 std::vector<Vertex> feature_bend_vertices(const TriangleMesh& tmesh, const EdgeIsFeatureMap& efm, const VPM& vpm,
                                           const std::vector<Vertex>& stops, double tolerance)
@@ -138,11 +138,43 @@ std::vector<Vertex> feature_bend_vertices(const TriangleMesh& tmesh, const EdgeI
     return d;
   };
   const double tol2 = tolerance * tolerance;
-  for(const std::vector<Vertex>& chain : feature_chains(tmesh, efm, stops, stop_set))
+  for(std::vector<Vertex>& chain : feature_chains(tmesh, efm, stops, stop_set))
   {
     std::vector<std::array<double, 3>> p;
     for(Vertex v : chain) p.push_back(point(v));
     std::vector<std::pair<std::size_t, std::size_t>> ranges(1, std::make_pair(std::size_t(0), p.size() - 1));
+    if(chain.size() > 3 && chain.front() == chain.back() && !stop_set.count(chain.front()))
+    {
+      // A closed chain through no stop starts at an arbitrary vertex, which the simplification would
+      // never hold (it is an end), though the loop may bend most there (the tip of a narrow oval, cut
+      // short by the collapses: teapot's spout). The loop is split instead at two vertices far apart:
+      // the one farthest from the start and the one farthest from that, both held if they are farther
+      // apart than `tolerance` (a smaller loop is left to the remeshing).
+      auto farthest_from = [&](std::size_t a) {
+        std::size_t far = a;
+        double far_d = -1.;
+        for(std::size_t k = 0; k + 1 < p.size(); ++k)
+        {
+          const double d = sq_distance(p[k], p[a], p[a]);
+          if(d > far_d) { far = k; far_d = d; }
+        }
+        return far;
+      };
+      const std::size_t a = farthest_from(0), b = farthest_from(a);
+      if(sq_distance(p[a], p[b], p[b]) <= tol2) continue;
+      bends.push_back(chain[a]);
+      bends.push_back(chain[b]);
+      // the loop from `hi` around through its start to `lo` (its first arc), then on to `hi` again
+      const std::size_t lo = (std::min)(a, b), hi = (std::max)(a, b);
+      std::vector<Vertex> rotated(chain.begin() + std::ptrdiff_t(hi), chain.end() - 1);
+      rotated.insert(rotated.end(), chain.begin(), chain.begin() + std::ptrdiff_t(hi) + 1);
+      chain.swap(rotated);
+      p.clear();
+      for(Vertex v : chain) p.push_back(point(v));
+      const std::size_t split = p.size() - 1 - (hi - lo); // where the first arc ends, at `lo`
+      ranges.assign(1, std::make_pair(std::size_t(0), split));
+      ranges.emplace_back(split, p.size() - 1);
+    }
     while(!ranges.empty())
     {
       const std::size_t i = ranges.back().first, j = ranges.back().second;
