@@ -14,6 +14,7 @@
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/assembly_repairs.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/fidelity_refinement.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/tip_snapping.h>
 #include <CGAL/Quad_remeshing/cross_field.h>
 #include <CGAL/Quad_remeshing/detect_feature_edges.h>
 #include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
@@ -93,7 +94,9 @@ const char* usage_text =
   "  --fidelity-tolerance F  the patches whose triangles stray farther than F times the bounding-box\n"
   "                       diagonal from their quads get half as many quads again along each side (at\n"
   "                       most 2 rounds, the second if the first added at most a fifth of the quads;\n"
-  "                       kept if closer by a tenth and at most 1.5 times the quads;\n"
+  "                       kept if closer by a tenth and at most 1.5 times the quads); then the\n"
+  "                       input's tips still farther than that each take the nearest free quad\n"
+  "                       vertex, held while the quads are smoothed again (kept if closer;\n"
   "                       default 0.004, 0 with --faces unless given; 0: none)\n"
   "  --feature-angle DEG  dihedral angle above which an edge is a feature (default 35; 180: none)\n"
   "  --feature-gap-angle DEG  dihedral angle above which a few edges continuing a feature line\n"
@@ -590,6 +593,25 @@ private:
       state_.qmesh, opt_.fidelity() * diagonal, opt_.verbose);
     r = kept_smoothing;
     r["fidelity"] = fs.report(diagonal);
+    // quad vertices onto the input's tips that the quads cut off (see QR::internal::snap_quads_to_input_tips())
+    auto smooth_held = [&](Quad_mesh& m, const auto& m_feature, const auto& held) {
+      QR::smooth_quad_mesh(m, state_.tmesh, state_.feature,
+                           CGAL::parameters::edge_is_constrained_map(m_feature).vertex_is_constrained_map(held)
+                             .number_of_iterations(QR::internal::tip_smoothing_iterations)
+                             .maximum_running_time(budget_.stage_limit(QR::internal::smooth_time_share)));
+    };
+    auto keep_tips = [&](Quad_mesh& better, const auto& better_feature) {
+      Quad_mesh m = better; // (a copy keeps the indices)
+      auto f = m.add_property_map<Quad_mesh::Edge_index, bool>("e:qr_feature", false).first;
+      for(auto e : m.edges()) f[e] = get(better_feature, e);
+      state_.qmesh = std::move(m);
+      state_.qfeature = state_.qmesh.property_map<Quad_mesh::Edge_index, bool>("e:qr_feature").first;
+    };
+    const double input_diagonal = QR::internal::mesh_bbox_diagonal(state_.input);
+    const QR::internal::Tip_snapping_statistics ts = QR::internal::snap_quads_to_input_tips(
+      state_.input, state_.qmesh, state_.qfeature, opt_.fidelity() * input_diagonal, smooth_held, keep_tips,
+      opt_.verbose);
+    r["fidelity"]["tips"] = ts.report(input_diagonal);
     return r;
   }
 

@@ -201,6 +201,8 @@ BOOST_AUTO_TEST_CASE(teapot_vertices_keep_to_their_component)
 
 // spot: the smoothed quads cut the tips of the horns and ears short (qmeval: 0.78% of the diagonal off
 // the input without the refinement); the patches there get more quads, and the closer quads are kept.
+// Then the input vertices still farther than the tolerance from the quads (the horn tips, 0.47%) get the
+// nearest quad vertex, and the quads smoothed around them are kept, being closer (0.41%).
 BOOST_AUTO_TEST_CASE(spot_patches_far_from_their_quads_get_more_quads)
 {
   Mesh t, coarse, refined;
@@ -211,6 +213,11 @@ BOOST_AUTO_TEST_CASE(spot_patches_far_from_their_quads_get_more_quads)
   BOOST_TEST(fidelity.find("kept")->number() >= 1.);
   BOOST_TEST(fidelity.find("refined_patches")->number() >= 1.);
   BOOST_TEST(fidelity.find("distance_after")->number() < 0.9 * fidelity.find("distance_before")->number());
+  const QR::Report& tips = *fidelity.find("tips");
+  BOOST_TEST(tips.find("snapped")->number() >= 1.);
+  BOOST_TEST(tips.find("kept")->boolean());
+  BOOST_TEST(tips.find("distance_after")->number() < tips.find("distance_before")->number());
+  BOOST_TEST(tips.find("distance_after")->number() <= 0.0045);
   const QR::Feature_fidelity before = fidelity_to_input(t, coarse), after = fidelity_to_input(t, refined);
   BOOST_TEST_MESSAGE("spot: Hausdorff " << before.hausdorff_max << " -> " << after.hausdorff_max << ", quads "
                      << num_faces(coarse) << " -> " << num_faces(refined));

@@ -23,6 +23,7 @@
 #include <CGAL/Quad_remeshing/internal/pipeline/fidelity_refinement.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/time_budget.h>
+#include <CGAL/Quad_remeshing/internal/pipeline/tip_snapping.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -30,6 +31,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <memory>
 #include <functional>
 #include <string>
 #include <vector>
@@ -61,7 +63,12 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
   patches get half as many edges again, the counts are solved again and the quads assembled and smoothed
   again; the new quads replace the old ones if they are closer by a tenth at least and at most 1.5 times
   as many as the first (at most 2 rounds, the second only if the first added at most a fifth of the
-  quads; the `fidelity` record says what was done).
+  quads; the `fidelity` record says what was done). Then the input vertices still farther than
+  `fidelity_tolerance` from the quads (the tip of an ear or a tusk, narrower than a quad) each take the
+  nearest free quad vertex (not on a feature line or the border, within two mean quad edge lengths, its
+  normal agreeing, one per two quad edge lengths, at most 64), which moves onto it and is held while the
+  quads are smoothed 10 more times; the result is kept if the largest distance between the input and
+  the quads, both ways, falls and no more quads are inverted (the `fidelity` record's `tips`).
 
   \code{.cpp}
   Mesh tmesh, qmesh;
@@ -321,20 +328,52 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   }
   else
   {
+    // The quads kept by the refinement and then by the tips go into `better` (a new mesh each time: see
+    // internal::copy_quad_mesh()), and into `qmesh` once at the end.
+    std::unique_ptr<QuadMesh> better;
+    std::vector<bool> better_feature; // the constrained edges of `better`, in the order of edges()
+    std::vector<bool> made_feature;   // those of the quads make() made last
     auto make = [&](const Side_quantization_problem& problem, std::vector<int>& c, QuadMesh& out) {
       auto out_feature = get(CGAL::dynamic_edge_property_t<bool>(), out);
       internal::assemble_with_count_repairs(tm, description, problem, c, solve, out, out_feature, false);
       smooth_quad_mesh(out, tm, feature, CGAL::parameters::edge_is_constrained_map(out_feature)
                                            .maximum_running_time(budget.stage_limit(internal::smooth_time_share)));
+      made_feature.clear();
+      for(auto e : edges(out)) made_feature.push_back(get(out_feature, e));
     };
-    auto keep = [&](QuadMesh& better) {
-      CGAL::clear(qmesh);
-      CGAL::copy_face_graph(better, qmesh);
+    auto keep = [&](QuadMesh& candidate) { // (the quad mesh make() made last)
+      better = std::make_unique<QuadMesh>(std::move(candidate));
+      better_feature = made_feature;
     };
     const double diagonal = internal::mesh_bbox_diagonal(tm);
     const internal::Fidelity_refinement_statistics fs = internal::refine_for_fidelity(
       tm, description, qp.problem, counts, solve, make, keep, qmesh, fidelity * diagonal, verbose);
     report["fidelity"] = fs.report(diagonal);
+
+    // quad vertices onto the input's tips that the quads cut off (see internal::snap_quads_to_input_tips())
+    const QuadMesh& current = better ? *better : qmesh;
+    auto current_feature = get(CGAL::dynamic_edge_property_t<bool>(), current);
+    {
+      std::size_t i = 0;
+      for(auto e : edges(current)) put(current_feature, e, better ? bool(better_feature[i++]) : bool(get(qfeature, e)));
+    }
+    auto smooth_held = [&](QuadMesh& m, const auto& m_feature, const auto& held) {
+      smooth_quad_mesh(m, tm, feature, CGAL::parameters::edge_is_constrained_map(m_feature).vertex_is_constrained_map(held)
+                                         .number_of_iterations(internal::tip_smoothing_iterations)
+                                         .maximum_running_time(budget.stage_limit(internal::smooth_time_share)));
+    };
+    std::unique_ptr<QuadMesh> snapped;
+    auto keep_tips = [&](QuadMesh& candidate, const auto&) { snapped = std::make_unique<QuadMesh>(std::move(candidate)); };
+    const double input_diagonal = internal::mesh_bbox_diagonal(tmesh);
+    const internal::Tip_snapping_statistics ts = internal::snap_quads_to_input_tips(
+      tmesh, current, current_feature, fidelity * input_diagonal, smooth_held, keep_tips, verbose);
+    report["fidelity"]["tips"] = ts.report(input_diagonal);
+    if(snapped || better)
+    {
+      const QuadMesh& result = snapped ? *snapped : *better;
+      CGAL::clear(qmesh);
+      CGAL::copy_face_graph(result, qmesh);
+    }
   }
   report["time_limit"] = budget.report();
   report["seconds"] = timer.time();

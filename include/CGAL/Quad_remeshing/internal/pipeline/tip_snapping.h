@@ -1,0 +1,250 @@
+// Copyright (c) 2026 The CGAL Quad_remeshing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// After the fidelity refinement: quad vertices are put onto the tips of the input surface that the quads
+// cut off (an ear, a tusk), and the result is kept if it is closer (quad_remesh() and the command line
+// share it).
+
+#ifndef CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_TIP_SNAPPING_H
+#define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_TIP_SNAPPING_H
+
+#include <CGAL/Quad_remeshing/quad_mesh_quality.h>
+#include <CGAL/Quad_remeshing/Report.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
+
+// at most this many quad vertices are put onto tips in one call
+constexpr std::size_t max_tip_snaps = 64;
+// the smoothing iterations after the quad vertices are put onto the tips
+constexpr unsigned tip_smoothing_iterations = 10;
+
+// Copies `from` into the empty `to`, and the flags of `from_feature` into `to_feature`. (No mesh holding
+// a dynamic property map that is used afterwards is cleared: CGAL::clear() removes the property maps of
+// a Surface_mesh, and a new map made afterwards can take the removed one's address, which the old map's
+// handle then removes when it goes.)
+template <typename QuadMesh, typename FromFeature, typename ToFeature>
+void copy_quad_mesh(const QuadMesh& from, const FromFeature& from_feature, QuadMesh& to, const ToFeature& to_feature)
+{
+  typedef typename boost::graph_traits<QuadMesh>::halfedge_descriptor halfedge_descriptor;
+  std::map<halfedge_descriptor, halfedge_descriptor> h2h;
+  CGAL::copy_face_graph(from, to, CGAL::parameters::halfedge_to_halfedge_output_iterator(std::inserter(h2h, h2h.end())));
+  for(auto e : edges(to)) put(to_feature, e, false);
+  for(const auto& hh : h2h)
+    if(get(from_feature, edge(hh.first, from))) put(to_feature, edge(hh.second, to), true);
+}
+
+struct Tip_snapping_statistics
+{
+  std::size_t candidates = 0; // input vertices farther than the tolerance from the quads
+  std::size_t snapped = 0;    // quad vertices put onto one of them
+  bool kept = false;          // whether the snapped, smoothed quads replaced the old ones
+  double distance_before = 0., distance_after = 0.; // the largest measured distance (absolute)
+  double seconds = 0.;
+
+  Report report(double diagonal) const
+  {
+    Report r = Report::object();
+    r["candidates"] = candidates;
+    r["snapped"] = snapped;
+    r["kept"] = kept;
+    r["distance_before"] = diagonal > 0. ? distance_before / diagonal : 0.;
+    r["distance_after"] = diagonal > 0. ? distance_after / diagonal : 0.;
+    r["seconds"] = seconds;
+    return r;
+  }
+};
+
+/*
+  The triangle mesh `input`'s tips that the quad mesh cuts off: the quads are a sampling of a surface at
+  their own size, and where the input narrows to a point smaller than a quad (an ear, a tusk, the tip of
+  a nose) no quad vertex lies on it and the quads pass beside it (camelhead: 1.2% of the diagonal).
+
+  The input vertices farther than `tolerance` from the quads are taken farthest first; each takes the
+  nearest quad vertex within two mean quad edge lengths that is not on a constrained edge (`qfeature`)
+  or the border, not taken yet, whose normal (of its quads) agrees with the input vertex's (the other
+  side of a thin sheet is left alone), and not within two mean quad edge lengths of a tip already taken;
+  at most `max_tip_snaps`. Those vertices are moved onto their tips in a copy of `qmesh`, which
+  `smooth(copy, copy_feature, fixed)` smooths with them held (it must not move the vertices of `fixed`).
+  The copy replaces `qmesh` (through `keep(copy, copy_feature)`) only if the largest distance between the
+  input and the quads, both ways (input vertices to the quads; quad centres and edge midpoints to the
+  input), falls and no quad is more inverted (scaled Jacobian <= 0) than before.
+*/
+template <typename TriangleMesh, typename QuadMesh, typename QuadFeatureMap, typename Smooth, typename Keep>
+Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, const QuadMesh& qmesh,
+                                                 const QuadFeatureMap& qfeature, double tolerance,
+                                                 const Smooth& smooth, const Keep& keep, bool verbose)
+{
+  typedef boost::graph_traits<QuadMesh> QTr;
+  typedef typename QTr::vertex_descriptor qvertex;
+  typedef typename QTr::halfedge_descriptor qhalfedge;
+  typedef typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel K;
+  typedef typename K::Vector_3 Vector;
+  typedef typename K::Triangle_3 Triangle;
+  typedef CGAL::AABB_triangle_primitive<K, typename std::vector<Triangle>::const_iterator> Quad_primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Quad_primitive>> Quad_tree;
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh> Tri_primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Tri_primitive>> Tri_tree;
+
+  Tip_snapping_statistics st;
+  CGAL::Real_timer timer;
+  timer.start();
+  if(!(tolerance > 0.) || is_empty(input) || is_empty(qmesh)) return st;
+  const auto ivpm = get(CGAL::vertex_point, input);
+  Tri_tree surface(faces(input).first, faces(input).second, input);
+  surface.accelerate_distance_queries();
+
+  // the largest distance both ways between `input` and `m`, and the input vertices farther than
+  // `tolerance` from `m` with their distances
+  auto measure = [&](const QuadMesh& m, std::vector<std::pair<double, Point>>* far) {
+    std::vector<Point> points;
+    quality::Index_polygons polygons;
+    quality::mesh_to_soup(m, get(CGAL::vertex_point, m), points, polygons);
+    const std::vector<Triangle> triangles = quality::triangulate_soup<K>(points, polygons);
+    double worst = 0.;
+    if(triangles.empty()) return worst;
+    Quad_tree quads(triangles.begin(), triangles.end());
+    quads.accelerate_distance_queries();
+    for(auto v : vertices(input))
+    {
+      const double d = std::sqrt(CGAL::to_double(quads.squared_distance(get(ivpm, v))));
+      worst = (std::max)(worst, d);
+      if(far != nullptr && d > tolerance) far->emplace_back(d, get(ivpm, v));
+    }
+    for(const auto& polygon : polygons)
+    {
+      Vector centre = NULL_VECTOR;
+      for(std::size_t i = 0; i < polygon.size(); ++i)
+      {
+        const Point& a = points[polygon[i]];
+        const Point& b = points[polygon[(i + 1) % polygon.size()]];
+        centre = centre + (a - CGAL::ORIGIN);
+        worst = (std::max)(worst, std::sqrt(CGAL::to_double(surface.squared_distance(CGAL::midpoint(a, b)))));
+      }
+      if(!polygon.empty())
+        worst = (std::max)(worst, std::sqrt(CGAL::to_double(
+                                    surface.squared_distance(CGAL::ORIGIN + centre / double(polygon.size())))));
+    }
+    return worst;
+  };
+  std::vector<std::pair<double, Point>> far;
+  st.distance_before = st.distance_after = measure(qmesh, &far);
+  st.candidates = far.size();
+  if(far.empty()) { st.seconds = timer.time(); return st; }
+  // farthest first; ties by position, so that the order does not depend on the sort
+  std::sort(far.begin(), far.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;
+  });
+
+  // the copy, with its constrained edges
+  QuadMesh copy;
+  auto copy_feature = get(CGAL::dynamic_edge_property_t<bool>(), copy);
+  copy_quad_mesh(qmesh, qfeature, copy, copy_feature);
+  auto fixed = get(CGAL::dynamic_vertex_property_t<bool>(), copy);
+  for(qvertex v : vertices(copy)) put(fixed, v, false);
+  auto cvpm = get(CGAL::vertex_point, copy);
+
+  // the quad vertices that may move onto a tip, with their normals
+  double length = 0.;
+  std::size_t edge_count = 0;
+  for(auto e : edges(copy))
+  {
+    length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(cvpm, source(e, copy)), get(cvpm, target(e, copy)))));
+    ++edge_count;
+  }
+  const double reach = 2. * length / double((std::max)(edge_count, std::size_t(1)));
+  std::vector<std::pair<qvertex, Vector>> movable;
+  for(qvertex v : vertices(copy))
+  {
+    bool free = !is_border(v, copy);
+    Vector normal = NULL_VECTOR;
+    for(qhalfedge h : halfedges_around_target(v, copy))
+    {
+      if(get(copy_feature, edge(h, copy))) free = false;
+      if(is_border(h, copy)) continue;
+      const Point& p = get(cvpm, v);
+      normal = normal + CGAL::cross_product(get(cvpm, target(next(h, copy), copy)) - p, get(cvpm, source(h, copy)) - p);
+    }
+    if(free) movable.emplace_back(v, normal);
+  }
+  // the normal of the input at a point of it (of the face nearest to it)
+  auto input_normal = [&](const Point& p) {
+    const auto f = surface.closest_point_and_primitive(p).second;
+    const auto h = halfedge(f, input);
+    return CGAL::cross_product(get(ivpm, target(h, input)) - get(ivpm, source(h, input)),
+                               get(ivpm, target(next(h, input), input)) - get(ivpm, source(h, input)));
+  };
+
+  std::vector<Point> tips;
+  for(const auto& candidate : far)
+  {
+    if(tips.size() >= max_tip_snaps) break;
+    const Point& tip = candidate.second;
+    bool close = false;
+    for(const Point& t : tips)
+      if(CGAL::to_double(CGAL::squared_distance(t, tip)) < reach * reach) { close = true; break; }
+    if(close) continue;
+    const Vector n = input_normal(tip);
+    std::size_t best = movable.size();
+    double best_d = reach * reach;
+    for(std::size_t i = 0; i < movable.size(); ++i)
+    {
+      if(get(fixed, movable[i].first) || CGAL::to_double(movable[i].second * n) <= 0.) continue;
+      const double d = CGAL::to_double(CGAL::squared_distance(get(cvpm, movable[i].first), tip));
+      if(d < best_d) { best_d = d; best = i; }
+    }
+    if(best == movable.size()) continue;
+    put(cvpm, movable[best].first, tip);
+    put(fixed, movable[best].first, true);
+    tips.push_back(tip);
+  }
+  st.snapped = tips.size();
+  if(tips.empty()) { st.seconds = timer.time(); return st; }
+  smooth(copy, copy_feature, fixed);
+
+  const double after = measure(copy, nullptr);
+  const Quad_mesh_quality before_quality = quad_mesh_quality(qmesh);
+  const Quad_mesh_quality after_quality = quad_mesh_quality(copy);
+  st.kept = after < st.distance_before &&
+            after_quality.non_positive_scaled_jacobian <= before_quality.non_positive_scaled_jacobian;
+  if(st.kept)
+  {
+    st.distance_after = after;
+    keep(copy, copy_feature);
+  }
+  st.seconds = timer.time();
+  if(verbose)
+    std::cerr << "[tips] " << st.candidates << " input vertices farther than " << tolerance << " from the quads, "
+              << st.snapped << " quad vertices put onto tips: distance " << st.distance_before << " -> " << after
+              << (st.kept ? ", kept" : ", not kept") << " (" << st.seconds << " s)" << std::endl;
+  return st;
+}
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+#endif // CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_TIP_SNAPPING_H
