@@ -5,6 +5,7 @@
 #include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 #include <CGAL/Quad_remeshing/quad_remesh.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -227,6 +228,41 @@ BOOST_AUTO_TEST_CASE(spot_patches_far_from_their_quads_get_more_quads)
   BOOST_TEST(double(num_faces(refined)) < 1.5 * double(num_faces(coarse)));
   const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(refined);
   BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+}
+
+// A vertex on no face, 1% of the diagonal above fandisk's surface where quads are free to move, is not
+// a tip of the surface: no quad vertex goes onto it (the output stays as close to the faces as without it).
+BOOST_AUTO_TEST_CASE(isolated_vertex_is_not_a_tip)
+{
+  Mesh t;
+  QR::read_and_repair(qr_test::data_file("fandisk.off"), t);
+  const Mesh faces_only = t;
+  auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  QR::detect_feature_edges(t, features);
+  // a vertex two rings away from every feature edge
+  Mesh::Vertex_index free_vertex;
+  for(auto v : t.vertices())
+  {
+    bool near_feature = false;
+    for(auto w : CGAL::vertices_around_target(v, t))
+      for(auto h : CGAL::halfedges_around_target(w, t))
+        if(get(features, t.edge(h)) || t.is_border(t.edge(h))) near_feature = true;
+    if(!near_feature) { free_vertex = v; break; }
+  }
+  BOOST_REQUIRE(free_vertex != Mesh::Vertex_index());
+  const double diagonal = CGAL::Quad_remeshing::internal::mesh_bbox_diagonal(t);
+  const auto normal = CGAL::Polygon_mesh_processing::compute_vertex_normal(free_vertex, t);
+  t.add_vertex(t.point(free_vertex) + 0.01 * diagonal * normal);
+  Mesh q;
+  const QR::Report r = QR::quad_remesh(t, q);
+  const QR::Report& tips = *r.find("fidelity")->find("tips");
+  BOOST_TEST_MESSAGE("isolated vertex: " << tips.find("candidates")->number() << " tip candidates, "
+                     << tips.find("snapped")->number() << " snapped");
+  const QR::Feature_fidelity f = fidelity_to_input(faces_only, q);
+  BOOST_TEST(f.hausdorff_max <= 0.005);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
   BOOST_TEST(quality.valid);
   BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
 }

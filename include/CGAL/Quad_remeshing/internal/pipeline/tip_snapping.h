@@ -81,7 +81,7 @@ struct Tip_snapping_statistics
   their own size, and where the input narrows to a point smaller than a quad (an ear, a tusk, the tip of
   a nose) no quad vertex lies on it and the quads pass beside it (camelhead: 1.2% of the diagonal).
 
-  The input vertices farther than `tolerance` from the quads are taken farthest first; each takes the
+  The input vertices (those on a face) farther than `tolerance` from the quads are taken farthest first; each takes the
   nearest quad vertex within two mean quad edge lengths that is not on a constrained edge (`qfeature`)
   or the border, not taken yet, whose normal (of its quads) agrees with the input vertex's (the other
   side of a thin sheet is left alone), and not within two mean quad edge lengths of a tip already taken;
@@ -112,7 +112,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   Tip_snapping_statistics st;
   CGAL::Real_timer timer;
   timer.start();
-  if(!(tolerance > 0.) || is_empty(input) || is_empty(qmesh)) return st;
+  if(!(tolerance > 0.) || faces(input).first == faces(input).second || is_empty(qmesh)) return st;
   const auto ivpm = get(CGAL::vertex_point, input);
   Tri_tree surface(faces(input).first, faces(input).second, input);
   surface.accelerate_distance_queries();
@@ -130,6 +130,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     quads.accelerate_distance_queries();
     for(auto v : vertices(input))
     {
+      if(halfedge(v, input) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue; // isolated: no surface
       const double d = std::sqrt(CGAL::to_double(quads.squared_distance(get(ivpm, v))));
       worst = (std::max)(worst, d);
       if(far != nullptr && d > tolerance) far->emplace_back(d, get(ivpm, v));
