@@ -101,14 +101,7 @@ public:
       if(p < distance.size())
         distance[p] = (std::max)(distance[p], std::sqrt(CGAL::to_double(CGAL::squared_distance(s, hit.first))));
     };
-    for(const std::vector<std::size_t>& f : polygons)
-    {
-      if(f.size() < 3) continue;
-      typename K::Vector_3 sum = CGAL::NULL_VECTOR;
-      for(std::size_t i : f) sum = sum + (points[i] - CGAL::ORIGIN);
-      measure(CGAL::ORIGIN + sum / double(f.size()));
-      for(std::size_t i = 0; i < f.size(); ++i) measure(CGAL::midpoint(points[f[i]], points[f[(i + 1) % f.size()]]));
-    }
+    quality::for_each_polygon_sample(points, polygons, measure);
     return distance;
   }
 

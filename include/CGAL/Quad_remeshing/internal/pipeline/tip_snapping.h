@@ -135,20 +135,9 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
       worst = (std::max)(worst, d);
       if(far != nullptr && d > tolerance) far->emplace_back(d, get(ivpm, v));
     }
-    for(const auto& polygon : polygons)
-    {
-      Vector centre = NULL_VECTOR;
-      for(std::size_t i = 0; i < polygon.size(); ++i)
-      {
-        const Point& a = points[polygon[i]];
-        const Point& b = points[polygon[(i + 1) % polygon.size()]];
-        centre = centre + (a - CGAL::ORIGIN);
-        worst = (std::max)(worst, std::sqrt(CGAL::to_double(surface.squared_distance(CGAL::midpoint(a, b)))));
-      }
-      if(!polygon.empty())
-        worst = (std::max)(worst, std::sqrt(CGAL::to_double(
-                                    surface.squared_distance(CGAL::ORIGIN + centre / double(polygon.size())))));
-    }
+    quality::for_each_polygon_sample(points, polygons, [&](const Point& s) {
+      worst = (std::max)(worst, std::sqrt(CGAL::to_double(surface.squared_distance(s))));
+    });
     return worst;
   };
   std::vector<std::pair<double, Point>> far;
@@ -181,12 +170,12 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   for(qvertex v : vertices(copy))
   {
     bool free = !is_border(v, copy);
+    const Point& p = get(cvpm, v);
     Vector normal = NULL_VECTOR;
     for(qhalfedge h : halfedges_around_target(v, copy))
     {
       if(get(copy_feature, edge(h, copy))) free = false;
       if(is_border(h, copy)) continue;
-      const Point& p = get(cvpm, v);
       normal = normal + CGAL::cross_product(get(cvpm, target(next(h, copy), copy)) - p, get(cvpm, source(h, copy)) - p);
     }
     if(free) movable.emplace_back(v, normal);

@@ -12,6 +12,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Random.h>
 
@@ -68,6 +69,21 @@ std::vector<typename K::Triangle_3> triangulate_soup(const std::vector<typename 
       for(std::size_t i = 1; i + 1 < f.size(); ++i) add(polyline[0], polyline[i], polyline[i + 1]);
   }
   return out;
+}
+
+// Calls `sample(point)` on the centre and on every edge midpoint of each polygon of the soup (with three
+// corners or more): where a quad mesh strays from a surface between its vertices (a quad across a groove).
+template <typename Point_3, typename Sample>
+void for_each_polygon_sample(const std::vector<Point_3>& pts, const Index_polygons& polygons, const Sample& sample)
+{
+  for(const std::vector<std::size_t>& f : polygons)
+  {
+    if(f.size() < 3) continue;
+    typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 sum = CGAL::NULL_VECTOR;
+    for(std::size_t i : f) sum = sum + (pts[i] - CGAL::ORIGIN);
+    sample(CGAL::ORIGIN + sum / double(f.size()));
+    for(std::size_t i = 0; i < f.size(); ++i) sample(CGAL::midpoint(pts[f[i]], pts[f[(i + 1) % f.size()]]));
+  }
 }
 
 // Runs `work(begin, end)` over [0, n) split into `threads` contiguous chunks; each index is
