@@ -568,7 +568,7 @@ BOOST_AUTO_TEST_CASE(rounds_repair_a_dangling_feature)
   BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   BOOST_TEST(s.layout.quality_patches == 2u);
   const std::vector<std::string> names{"features", "convexity", "loops", "border_to_border", "recursion", "last_resort",
-                                       "last_resort_cuts", "path_part_removal"};
+                                       "last_resort_cuts", "path_part_removal", "corners"};
   BOOST_TEST(s.rounds.size() == names.size());
   for(std::size_t i = 0; i < names.size() && i < s.rounds.size(); ++i) BOOST_TEST(s.rounds[i].name == names[i]);
   BOOST_TEST(s.rounds[1].paths >= 1u);
@@ -757,7 +757,7 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   BOOST_TEST(s.layout.paths >= s.rounds[0].paths);
   BOOST_TEST(s.stopped_in_round.empty());
-  BOOST_TEST(s.rounds.size() == 8u);
+  BOOST_TEST(s.rounds.size() == 9u);
 
   // the candidates traced in three threads: the same layout
   Layout parallel(m, field, no_singularity);
@@ -777,7 +777,7 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   std::vector<std::string> names;
   for(const auto& r : sc.rounds) names.push_back(r.name);
   BOOST_TEST((names == std::vector<std::string>{"features", "convexity", "loops", "last_resort", "last_resort_cuts",
-                                                     "path_part_removal"}));
+                                                     "path_part_removal", "corners"}));
   BOOST_TEST(sc.rounds[1].paths == s.rounds[1].paths); // the convexity round ran to its end
   BOOST_TEST(sc.rounds[2].paths == 0u);
   BOOST_TEST(sc.report().find("stopped_early")->boolean());
@@ -958,6 +958,68 @@ BOOST_AUTO_TEST_CASE(feature_tip_is_a_corner)
   const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, is_feature, layout);
   BOOST_TEST(s.layout.valid_patches == s.layout.patches);
   for(E e : m.edges()) if(is_feature[e]) BOOST_TEST(layout.is_cut(e));
+}
+
+// A lens of feature lines too small for any path: on the border of a flat 4 x 4 square, the border edge
+// a-b and the feature lines a-c-b (c 0.35 above the middle of a-b) bound 3 triangles around O. Its tips
+// a and b (19 degrees) are its only corners, c is straight, so it has 2 corners; no cut through O helps
+// (the piece around O turns left). The round `corners` makes c a corner of the lens only: the lens is a
+// valid triangle, and c stays a point of the square's bottom side.
+BOOST_AUTO_TEST_CASE(feature_lens_gets_a_third_corner)
+{
+  Mesh m;
+  std::map<std::pair<int, int>, V> g; // the grid vertices, x and y in 0..4 (no (1,0) to (3,0) inside the lens)
+  for(int j = 0; j <= 4; ++j)
+    for(int i = 0; i <= 4; ++i)
+      if(j > 0 || i != 2) g[{i, j}] = m.add_vertex(Point_3(i, j, 0));
+  const V a = g[{1, 0}], b = g[{3, 0}];
+  const V c = m.add_vertex(Point_3(2, 0.35, 0)), O = m.add_vertex(Point_3(2, 0.15, 0));
+  auto face = [&](V x, V y, V z) { BOOST_REQUIRE(m.add_face(x, y, z) != Mesh::null_face()); };
+  face(a, b, O); face(b, c, O); face(c, a, O);
+  face(g[{0, 0}], a, g[{1, 1}]); face(g[{0, 0}], g[{1, 1}], g[{0, 1}]);
+  face(a, c, g[{1, 1}]); face(g[{1, 1}], c, g[{2, 1}]); face(c, b, g[{3, 1}]); face(c, g[{3, 1}], g[{2, 1}]);
+  face(b, g[{4, 0}], g[{4, 1}]); face(b, g[{4, 1}], g[{3, 1}]);
+  for(int j = 1; j < 4; ++j)
+    for(int i = 0; i < 4; ++i) {
+      face(g[{i, j}], g[{i + 1, j}], g[{i + 1, j + 1}]);
+      face(g[{i, j}], g[{i + 1, j + 1}], g[{i, j + 1}]);
+    }
+  BOOST_REQUIRE(CGAL::is_valid_polygon_mesh(m));
+  auto feature = m.add_property_map<E, bool>("e:lens", false).first;
+  feature[m.edge(m.halfedge(a, c))] = feature[m.edge(m.halfedge(c, b))] = true;
+  auto field = stand_in_field(m);
+  const Mesh::Halfedge_index bc = m.halfedge(b, c); // in the lens, c its target
+  auto corners_at_c = [&](const Layout& layout, std::size_t p) {
+    const auto& C = layout.patch(p).corners;
+    return std::count(C.begin(), C.end(), c);
+  };
+
+  Layout layout(m, field, no_singularity);
+  layout.add_feature_paths(feature);
+  const std::size_t lens = layout.patch_id(m.face(bc)), square = layout.patch_id(m.face(m.opposite(bc)));
+  BOOST_TEST(layout.patch(lens).corners.size() == 2u);
+  BOOST_TEST(layout.validity(lens) == Layout::BAD_VALENCE);
+  BOOST_TEST(layout.validity(square) == Layout::SATISFIED);
+  const std::size_t square_corners = layout.patch(square).corners.size();
+  layout.add_corner(bc);
+  BOOST_TEST(layout.patch(layout.patch_id(m.face(bc))).corners.size() == 3u);
+  BOOST_TEST(corners_at_c(layout, layout.patch_id(m.face(bc))) == 1);
+  BOOST_TEST(layout.validity(layout.patch_id(m.face(bc))) == Layout::SATISFIED);
+  BOOST_TEST(layout.patch(layout.patch_id(m.face(m.opposite(bc)))).corners.size() == square_corners);
+  BOOST_TEST(corners_at_c(layout, layout.patch_id(m.face(m.opposite(bc)))) == 0);
+  BOOST_CHECK_THROW(layout.add_corner(m.halfedge(O, c)), std::invalid_argument); // not on a path
+
+  // the rounds: the lens keeps its three faces and gets c as its third corner
+  Layout traced(m, field, no_singularity);
+  const auto s = CGAL::Quad_remeshing::trace_patch_layout(m, feature, traced);
+  BOOST_TEST(s.rounds.back().name == "corners");
+  BOOST_TEST(s.added_corners == 1u);
+  BOOST_TEST(s.report()["added_corners"].number() == 1.);
+  const std::size_t p = traced.patch_id(m.face(bc));
+  BOOST_TEST(traced.patch(p).faces.size() == 3u);
+  BOOST_TEST(traced.patch(p).corners.size() == 3u);
+  BOOST_TEST(corners_at_c(traced, p) == 1);
+  BOOST_TEST(s.layout.valid_patches == s.layout.patches);
 }
 
 // A closed mesh with no feature line: the looped-paths round (and, if needed, the last resort) must cut it

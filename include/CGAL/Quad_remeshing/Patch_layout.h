@@ -38,6 +38,43 @@ CGAL_QUAD_REMESHING_ADD_NAMED_PARAMETER(tracing_length_weight_t, tracing_length_
 namespace CGAL {
 namespace Quad_remeshing {
 
+namespace internal {
+
+// The position i (a corner at the target of the i-th edge) of a loop of m edges nearest the middle of its
+// longest side: `cum` holds the cumulated edge lengths (m + 1 values from 0), `corners` the sorted
+// positions of the corners (with none, the whole loop is the side). Returns m when that side has no
+// position left between its corners.
+inline std::size_t middle_of_longest_side(const std::vector<double>& cum, const std::vector<std::size_t>& corners)
+{
+  const std::size_t m = cum.size() - 1;
+  auto side_length = [&](std::size_t c) { // from corners[c] to corners[c+1], cyclically
+    const std::size_t i = corners[c], j = corners[(c + 1) % corners.size()];
+    return j > i ? cum[j] - cum[i] : cum[m] - cum[i] + cum[j];
+  };
+  std::size_t from = 0;
+  double len = cum[m];
+  if(!corners.empty()) {
+    double l_best = -1.;
+    for(std::size_t c = 0; c < corners.size(); ++c)
+      if(side_length(c) > l_best) { l_best = side_length(c); from = corners[c]; }
+    len = l_best;
+  }
+  const double target_len = (corners.empty() ? 0. : cum[from]) + 0.5 * len;
+  std::size_t best_i = m;
+  double best_d = 1e300;
+  for(std::size_t step = 1; step < m; ++step) {
+    const std::size_t i = corners.empty() ? step - 1 : (from + step) % m;
+    if(std::find(corners.begin(), corners.end(), i) != corners.end()) break; // reached the next corner
+    double pos = cum[i + 1];
+    if(!corners.empty() && i < from) pos += cum[m];
+    const double d = std::abs(pos - target_len);
+    if(d < best_d) { best_d = d; best_i = i; }
+  }
+  return best_i;
+}
+
+} // namespace internal
+
 /*!
   \ingroup PkgQuadRemeshingRef
   Figures of a patch layout (see `Patch_layout::statistics()`).
@@ -329,6 +366,22 @@ public:
       if(p.is_feature) --edge_features_[e];
     }
     alive_[id] = 0;
+    dirty_ = graph_dirty_ = true;
+  }
+
+  /*!
+    makes the target of `h` a corner of the patch on the left of `h`: a straight turn there becomes a
+    right turn. The patch on the other side does not change. Meant for a convex patch that no path can
+    split but that has fewer than three corners (see `trace_patch_layout()`); the corner holds while `h`
+    is on the boundary of a patch.
+    \pre `h` is on a path and is not a border halfedge
+  */
+  void add_corner(halfedge_descriptor h)
+  {
+    if(is_border(h, tm_) || !is_cut(edge(h, tm_)))
+      throw std::invalid_argument("Patch_layout::add_corner: the halfedge is not on a patch boundary");
+    if(added_corner_.empty()) added_corner_.assign(num_halfedges(tm_), 0);
+    added_corner_[hindex_[h]] = 1;
     dirty_ = graph_dirty_ = true;
   }
 
@@ -921,11 +974,12 @@ private:
   // whether the edge `e` stays on a patch boundary whatever the paths: it is on a feature path or the border
   bool is_fixed(edge_descriptor e) const { return edge_features_[eindex_.at(e)] > 0 || is_border(e, tm_); }
 
-  // The turn at target(h); a sharp tip between two fixed lines is a corner, not a U-turn (see `max_tip_angle`).
+  // The turn at target(h); a sharp tip between two fixed lines is a corner, not a U-turn (see `max_tip_angle`),
+  // and so is a straight turn made a corner by add_corner().
   Turn classify(halfedge_descriptor h) const
   {
     const Turn_measure m = measure_turn(h);
-    if(m.quarter_turns == 0) return STRAIGHT;
+    if(m.quarter_turns == 0) return !added_corner_.empty() && added_corner_[hindex_[h]] ? RIGHT_TURN : STRAIGHT;
     if(m.quarter_turns == 1) return RIGHT_TURN;
     if(m.quarter_turns == -1) return LEFT_TURN;
     if(m.quarter_turns >= 2 && m.fan < max_tip_angle && is_fixed(edge(h, tm_)) && is_fixed(edge(m.out, tm_)))
@@ -1152,6 +1206,7 @@ private:
   std::vector<int> singularity_index_;
   std::vector<int> edge_paths_;
   std::vector<int> edge_features_; // number of feature paths on each edge
+  std::vector<char> added_corner_;  // per halfedge: its target is a corner of its patch (add_corner())
   std::vector<Path> paths_;
   std::vector<char> alive_;
   internal::Direction_graph<Vector_3> graph_;

@@ -51,6 +51,7 @@ struct Trace_patch_layout_statistics
   Patch_layout_statistics layout; ///< figures of the final layout
   std::vector<Round> rounds;      ///< in the order they ran
   std::size_t removed_paths = 0;  ///< paths removed by the clean-up
+  std::size_t added_corners = 0;  ///< corners added by the round `corners` (see `trace_patch_layout()`)
   double seconds = 0.;            ///< total time
   /// the round that reached `maximum_running_time` (the rounds after it did not run), or empty
   std::string stopped_in_round;
@@ -70,6 +71,7 @@ struct Trace_patch_layout_statistics
     }
     r["rounds"] = a;
     r["removed_paths"] = removed_paths;
+    r["added_corners"] = added_corners;
     r["stopped_early"] = !stopped_in_round.empty();
     if(!stopped_in_round.empty()) r["stopped_in_round"] = stopped_in_round;
     r["seconds"] = seconds;
@@ -936,6 +938,9 @@ private:
     of the layout goes down. Slivers between two close paths, which no cut of their own improves, mostly
     go this way. Then the last-resort cuts run again; repeated while the number of invalid patches falls
     (at most `number_of_iterations` times).
+  - `corners`: a convex disk patch that still has fewer than 3 corners (a loop of feature lines meeting
+    at two tips, too narrow for any path) gets corners (`Patch_layout::add_corner()`) in the middle of its
+    longest sides until it has 3; `added_corners` of the result counts them.
 
   In every round the candidates are tried farthest-first (the next one is the one whose vertices are, on
   average, farthest from the paths already inserted, features included) and kept by one acceptance rule:
@@ -947,11 +952,11 @@ private:
   the new path only. A clean-up finally removes inserted paths in reverse insertion order when the patches
   they separate, merged, are valid, and meet the quality conditions if one of them did.
 
-  Not guaranteed: convexity and the number of sides of every patch. The last resort makes every patch a
-  disk; a disk patch that neither a cut nor a path-part removal improves (typically a sliver between two
-  close paths that both cross other paths there, or two feature lines one triangle apart) is left
-  non-convex or with fewer than 3 or more than 6 corners and counted in the figures (the pipeline then
-  chooses corners for it, see `quad_remesh()`).
+  Not guaranteed: convexity, and at most 6 sides. The last resort makes every patch a disk and the round
+  `corners` gives every convex one at least 3 corners; a disk patch that neither a cut nor a path-part
+  removal improves (typically a sliver between two close paths that both cross other paths there, or two
+  feature lines one triangle apart) is left non-convex or with more than 6 corners and counted in the
+  figures (the pipeline then chooses corners for it, see `quad_remesh()`).
 
   \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
   \tparam EdgeIsFeatureMap a readable property map, key `edge_descriptor`, value `bool`
@@ -1133,6 +1138,37 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
       if(removed == 0 || tracer.invalid_patches() >= before) break;
     }
     r.paths = tracer.cuts_made - cuts_before;
+  }, false);
+  // Last, a convex disk with fewer than 3 corners, which no path or cut could split (typically a loop of
+  // feature lines meeting at two tips, a few triangles wide), gets corners in the middle of its longest
+  // sides, where the quadrangulation would put them (internal::middle_of_longest_side()): it is then a
+  // valid triangle. The patch on the other side of such a corner sees a point of its side.
+  run("corners", [&](Round& r) {
+    typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+    std::vector<halfedge_descriptor> corners;
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p) {
+      const auto& P = layout.patch(p);
+      if(layout.validity(P) != Layout::BAD_VALENCE || P.corners.size() >= 3) continue;
+      ++r.candidates;
+      const auto& L = P.loops[0];
+      const std::size_t m = L.size();
+      std::vector<double> cum(m + 1, 0.);
+      std::vector<std::size_t> positions;
+      for(std::size_t i = 0; i < m; ++i) {
+        cum[i + 1] = cum[i] + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout.point(source(L[i], tmesh)),
+                                                                                 layout.point(target(L[i], tmesh)))));
+        if(P.turns[0][i] != Layout::STRAIGHT) positions.push_back(i);
+      }
+      while(positions.size() < 3) {
+        const std::size_t i = internal::middle_of_longest_side(cum, positions);
+        if(i == m) break;
+        positions.insert(std::upper_bound(positions.begin(), positions.end(), i), i);
+        corners.push_back(L[i]);
+      }
+    }
+    // added once the patches are all looked at: adding rebuilds the patches, whose ids may then change
+    for(halfedge_descriptor h : corners) layout.add_corner(h);
+    stats.added_corners = corners.size();
   }, false);
   stats.layout = layout.statistics();
   stats.seconds = total.time();

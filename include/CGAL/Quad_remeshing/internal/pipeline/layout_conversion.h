@@ -122,30 +122,7 @@ struct Quadrangulation_layout
       }
       while(corners.size() < min_corners && corners.size() < m)
       {
-        // the middle of the longest side (the whole loop when there is no corner)
-        std::size_t from = 0;
-        double len = cum[m];
-        if(!corners.empty())
-        {
-          std::size_t c_best = 0;
-          double l_best = -1;
-          for(std::size_t c = 0; c < corners.size(); ++c)
-            if(side_length(c) > l_best) { l_best = side_length(c); c_best = c; }
-          from = corners[c_best];
-          len = l_best;
-        }
-        const double target_len = (corners.empty() ? 0. : cum[from]) + 0.5 * len;
-        std::size_t best_i = m;
-        double best_d = 1e300;
-        for(std::size_t step = 1; step < m; ++step)
-        {
-          const std::size_t i = (corners.empty() ? step - 1 : (from + step) % m);
-          if(std::find(corners.begin(), corners.end(), i) != corners.end()) break; // reached the next corner
-          double pos = cum[i + 1];
-          if(!corners.empty() && i < from) pos += cum[m];
-          const double d = std::abs(pos - target_len);
-          if(d < best_d) { best_d = d; best_i = i; }
-        }
+        const std::size_t best_i = middle_of_longest_side(cum, corners);
         if(best_i == m) break;
         corners.push_back(best_i);
         std::sort(corners.begin(), corners.end());
