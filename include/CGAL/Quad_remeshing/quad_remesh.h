@@ -66,9 +66,11 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
   quads; the `fidelity` record says what was done). Then the input vertices still farther than
   `fidelity_tolerance` from the quads (the tip of an ear or a tusk, narrower than a quad) each take the
   nearest free quad vertex (not on a feature line or the border, within two mean quad edge lengths, its
-  normal agreeing, one per two quad edge lengths, at most 64), which moves onto it and is held while the
-  quads are smoothed 10 more times; the result is kept if the largest distance between the input and
-  the quads, both ways, falls and no more quads are inverted (the `fidelity` record's `tips`).
+  normal agreeing, one per quad edge length or, if that is not closer, per two, at most 64), which moves
+  onto it and is held while the quads are smoothed 10 more times; the result is kept if the largest
+  distance between the input and the quads, both ways, falls and no more quads are inverted, and the
+  tips it left get the next round (at most 3, the tips taken before still held; the `fidelity` record's
+  `tips`).
 
   \code{.cpp}
   Mesh tmesh, qmesh;

@@ -28,6 +28,9 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <memory>
+#include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -39,6 +42,8 @@ namespace internal {
 constexpr std::size_t max_tip_snaps = 64;
 // the smoothing iterations after the quad vertices are put onto the tips
 constexpr unsigned tip_smoothing_iterations = 10;
+// at most this many rounds of tips, each on the quads the round before kept
+constexpr unsigned max_tip_rounds = 3;
 
 // Copies `from` into the empty `to`, and the flags of `from_feature` into `to_feature`. (No mesh holding
 // a dynamic property map that is used afterwards is cleared: CGAL::clear() removes the property maps of
@@ -58,7 +63,8 @@ void copy_quad_mesh(const QuadMesh& from, const FromFeature& from_feature, QuadM
 struct Tip_snapping_statistics
 {
   std::size_t candidates = 0; // input vertices farther than the tolerance from the quads
-  std::size_t snapped = 0;    // quad vertices put onto one of them
+  std::size_t snapped = 0;    // quad vertices put onto one of them (in every round tried)
+  std::size_t rounds = 0;     // rounds kept
   bool kept = false;          // whether the snapped, smoothed quads replaced the old ones
   double distance_before = 0., distance_after = 0.; // the largest measured distance (absolute)
   double seconds = 0.;
@@ -68,6 +74,7 @@ struct Tip_snapping_statistics
     Report r = Report::object();
     r["candidates"] = candidates;
     r["snapped"] = snapped;
+    r["rounds"] = rounds;
     r["kept"] = kept;
     r["distance_before"] = diagonal > 0. ? distance_before / diagonal : 0.;
     r["distance_after"] = diagonal > 0. ? distance_after / diagonal : 0.;
@@ -81,15 +88,19 @@ struct Tip_snapping_statistics
   their own size, and where the input narrows to a point smaller than a quad (an ear, a tusk, the tip of
   a nose) no quad vertex lies on it and the quads pass beside it (camelhead: 1.2% of the diagonal).
 
-  The input vertices (those on a face) farther than `tolerance` from the quads are taken farthest first; each takes the
-  nearest quad vertex within two mean quad edge lengths that is not on a constrained edge (`qfeature`)
-  or the border, not taken yet, whose normal (of its quads) agrees with the input vertex's (the other
-  side of a thin sheet is left alone), and not within two mean quad edge lengths of a tip already taken;
-  at most `max_tip_snaps`. Those vertices are moved onto their tips in a copy of `qmesh`, which
-  `smooth(copy, copy_feature, fixed)` smooths with them held (it must not move the vertices of `fixed`).
-  The copy replaces `qmesh` (through `keep(copy, copy_feature)`) only if the largest distance between the
-  input and the quads, both ways (input vertices to the quads; quad centres and edge midpoints to the
-  input), falls and no quad is more inverted (scaled Jacobian <= 0) than before.
+  The input vertices (those on a face) farther than `tolerance` from the quads are taken farthest first;
+  each takes the nearest quad vertex within two mean quad edge lengths that is not on a constrained edge
+  (`qfeature`) or the border, not taken yet, whose normal (of its quads) agrees with the input vertex's
+  (the other side of a thin sheet is left alone), and not within two mean quad edge lengths of a tip
+  already taken; at most `max_tip_snaps`. Those vertices are moved onto their tips in a copy of `qmesh`,
+  which `smooth(copy, copy_feature, fixed)` smooths with them held (it must not move the vertices of
+  `fixed`). The copy is kept if the largest distance between the input and the quads, both ways (input
+  vertices to the quads; quad centres and edge midpoints to the input), falls and no more quads are
+  inverted (scaled Jacobian <= 0) than in `qmesh`. Then the next round (at most `max_tip_rounds`) does
+  the same on the kept copy, with the tips of the rounds before still held: an ear is a blade rather than
+  a point, and the points of its rim within two edge lengths of the tip taken first, left out then, get
+  vertices of their own (camelhead: 0.71% -> 0.49%). The last copy kept replaces `qmesh` (through
+  `keep(copy, copy_feature)`).
 */
 template <typename TriangleMesh, typename QuadMesh, typename QuadFeatureMap, typename Smooth, typename Keep>
 Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, const QuadMesh& qmesh,
@@ -145,41 +156,21 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   st.candidates = far.size();
   if(far.empty()) { st.seconds = timer.time(); return st; }
   // farthest first; ties by position, so that the order does not depend on the sort
-  std::sort(far.begin(), far.end(), [](const auto& a, const auto& b) {
+  auto farther = [](const std::pair<double, Point>& a, const std::pair<double, Point>& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;
-  });
+  };
+  std::sort(far.begin(), far.end(), farther);
 
-  // the copy, with its constrained edges
-  QuadMesh copy;
-  auto copy_feature = get(CGAL::dynamic_edge_property_t<bool>(), copy);
-  copy_quad_mesh(qmesh, qfeature, copy, copy_feature);
-  auto fixed = get(CGAL::dynamic_vertex_property_t<bool>(), copy);
-  for(qvertex v : vertices(copy)) put(fixed, v, false);
-  auto cvpm = get(CGAL::vertex_point, copy);
-
-  // the quad vertices that may move onto a tip, with their normals
-  double length = 0.;
-  std::size_t edge_count = 0;
-  for(auto e : edges(copy))
+  // the quads of a round, with their constrained edges and held vertices (the maps are made once the mesh
+  // has its address, and go before it)
+  typedef decltype(get(CGAL::dynamic_edge_property_t<bool>(), std::declval<QuadMesh&>())) Edge_flags;
+  typedef decltype(get(CGAL::dynamic_vertex_property_t<bool>(), std::declval<QuadMesh&>())) Vertex_flags;
+  struct Round_mesh
   {
-    length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(cvpm, source(e, copy)), get(cvpm, target(e, copy)))));
-    ++edge_count;
-  }
-  const double reach = 2. * length / double((std::max)(edge_count, std::size_t(1)));
-  std::vector<std::pair<qvertex, Vector>> movable;
-  for(qvertex v : vertices(copy))
-  {
-    bool free = !is_border(v, copy);
-    const Point& p = get(cvpm, v);
-    Vector normal = NULL_VECTOR;
-    for(qhalfedge h : halfedges_around_target(v, copy))
-    {
-      if(get(copy_feature, edge(h, copy))) free = false;
-      if(is_border(h, copy)) continue;
-      normal = normal + CGAL::cross_product(get(cvpm, target(next(h, copy), copy)) - p, get(cvpm, source(h, copy)) - p);
-    }
-    if(free) movable.emplace_back(v, normal);
-  }
+    QuadMesh mesh;
+    std::optional<Edge_flags> feature;
+    std::optional<Vertex_flags> fixed;
+  };
   // the normal of the input at a point of it (of the face nearest to it)
   auto input_normal = [&](const Point& p) {
     const auto f = surface.closest_point_and_primitive(p).second;
@@ -187,49 +178,113 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     return CGAL::cross_product(get(ivpm, target(h, input)) - get(ivpm, source(h, input)),
                                get(ivpm, target(next(h, input), input)) - get(ivpm, source(h, input)));
   };
-
-  std::vector<Point> tips;
-  for(const auto& candidate : far)
+  const std::size_t inverted_before = quad_mesh_quality(qmesh).non_positive_scaled_jacobian;
+  std::unique_ptr<Round_mesh> best; // the last round kept
+  std::set<Point> held;             // the tips of the rounds kept
+  double best_distance = st.distance_before;
+  // a round first takes tips one mean quad edge length apart; if that is not closer, two
+  unsigned round = 0;
+  bool sparse = false;
+  while(round < max_tip_rounds && !far.empty())
   {
-    if(tips.size() >= max_tip_snaps) break;
-    const Point& tip = candidate.second;
-    bool close = false;
-    for(const Point& t : tips)
-      if(CGAL::to_double(CGAL::squared_distance(t, tip)) < reach * reach) { close = true; break; }
-    if(close) continue;
-    const Vector n = input_normal(tip);
-    std::size_t best = movable.size();
-    double best_d = reach * reach;
-    for(std::size_t i = 0; i < movable.size(); ++i)
+    auto attempt = std::make_unique<Round_mesh>();
+    QuadMesh& copy = attempt->mesh;
+    attempt->feature.emplace(get(CGAL::dynamic_edge_property_t<bool>(), copy));
+    attempt->fixed.emplace(get(CGAL::dynamic_vertex_property_t<bool>(), copy));
+    const Edge_flags& copy_feature = *attempt->feature;
+    const Vertex_flags& fixed = *attempt->fixed;
+    if(best) copy_quad_mesh(best->mesh, *best->feature, copy, copy_feature);
+    else copy_quad_mesh(qmesh, qfeature, copy, copy_feature);
+    auto cvpm = get(CGAL::vertex_point, copy);
+    for(qvertex v : vertices(copy)) put(fixed, v, held.count(get(cvpm, v)) > 0); // held vertices do not move
+
+    // the quad vertices that may move onto a tip, with their normals
+    double length = 0.;
+    std::size_t edge_count = 0;
+    for(auto e : edges(copy))
     {
-      if(get(fixed, movable[i].first) || CGAL::to_double(movable[i].second * n) <= 0.) continue;
-      const double d = CGAL::to_double(CGAL::squared_distance(get(cvpm, movable[i].first), tip));
-      if(d < best_d) { best_d = d; best = i; }
+      length += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(cvpm, source(e, copy)), get(cvpm, target(e, copy)))));
+      ++edge_count;
     }
-    if(best == movable.size()) continue;
-    put(cvpm, movable[best].first, tip);
-    put(fixed, movable[best].first, true);
-    tips.push_back(tip);
-  }
-  st.snapped = tips.size();
-  if(tips.empty()) { st.seconds = timer.time(); return st; }
-  smooth(copy, copy_feature, fixed);
+    const double reach = 2. * length / double((std::max)(edge_count, std::size_t(1)));
+    const double separation = sparse ? reach : 0.5 * reach;
+    std::vector<std::pair<qvertex, Vector>> movable;
+    for(qvertex v : vertices(copy))
+    {
+      bool free = !is_border(v, copy) && !get(fixed, v);
+      const Point& p = get(cvpm, v);
+      Vector normal = NULL_VECTOR;
+      for(qhalfedge h : halfedges_around_target(v, copy))
+      {
+        if(get(copy_feature, edge(h, copy))) free = false;
+        if(is_border(h, copy)) continue;
+        normal = normal + CGAL::cross_product(get(cvpm, target(next(h, copy), copy)) - p, get(cvpm, source(h, copy)) - p);
+      }
+      if(free) movable.emplace_back(v, normal);
+    }
 
-  const double after = measure(copy, nullptr);
-  const Quad_mesh_quality before_quality = quad_mesh_quality(qmesh);
-  const Quad_mesh_quality after_quality = quad_mesh_quality(copy);
-  st.kept = after < st.distance_before &&
-            after_quality.non_positive_scaled_jacobian <= before_quality.non_positive_scaled_jacobian;
-  if(st.kept)
+    std::vector<Point> tips;
+    for(const auto& candidate : far)
+    {
+      if(held.size() + tips.size() >= max_tip_snaps) break;
+      const Point& tip = candidate.second;
+      bool close = false;
+      for(const Point& t : tips)
+        if(CGAL::to_double(CGAL::squared_distance(t, tip)) < separation * separation) { close = true; break; }
+      if(close) continue;
+      const Vector n = input_normal(tip);
+      std::size_t best_vertex = movable.size();
+      double best_d = reach * reach;
+      for(std::size_t i = 0; i < movable.size(); ++i)
+      {
+        if(get(fixed, movable[i].first) || CGAL::to_double(movable[i].second * n) <= 0.) continue;
+        const double d = CGAL::to_double(CGAL::squared_distance(get(cvpm, movable[i].first), tip));
+        if(d < best_d) { best_d = d; best_vertex = i; }
+      }
+      if(best_vertex == movable.size()) continue;
+      put(cvpm, movable[best_vertex].first, tip);
+      put(fixed, movable[best_vertex].first, true);
+      tips.push_back(tip);
+    }
+    st.snapped += tips.size();
+    if(tips.empty()) break; // (then none at a larger separation either)
+    smooth(copy, copy_feature, fixed);
+
+    std::vector<std::pair<double, Point>> next_far;
+    const double after = measure(copy, &next_far);
+    const bool closer = after < best_distance &&
+                        quad_mesh_quality(copy).non_positive_scaled_jacobian <= inverted_before;
+    if(verbose)
+      std::cerr << "[tips] round " << round + 1 << (sparse ? " (sparse)" : "") << ": " << far.size()
+                << " input vertices farther than " << tolerance << " from the quads, " << tips.size()
+                << " quad vertices put onto tips: distance " << best_distance << " -> " << after
+                << (closer ? ", kept" : ", not kept") << std::endl;
+    if(!closer)
+    {
+      if(sparse) break;
+      sparse = true;
+      continue;
+    }
+    ++round;
+    sparse = false;
+    ++st.rounds;
+    best_distance = after;
+    held.insert(tips.begin(), tips.end());
+    best = std::move(attempt);
+    far = std::move(next_far);
+    std::sort(far.begin(), far.end(), farther);
+  }
+  if(best)
   {
-    st.distance_after = after;
-    keep(copy, copy_feature);
+    st.kept = true;
+    st.distance_after = best_distance;
+    keep(best->mesh, *best->feature);
   }
   st.seconds = timer.time();
   if(verbose)
     std::cerr << "[tips] " << st.candidates << " input vertices farther than " << tolerance << " from the quads, "
-              << st.snapped << " quad vertices put onto tips: distance " << st.distance_before << " -> " << after
-              << (st.kept ? ", kept" : ", not kept") << " (" << st.seconds << " s)" << std::endl;
+              << st.rounds << " round(s) kept, " << held.size() << " quad vertices on tips: distance "
+              << st.distance_before << " -> " << st.distance_after << " (" << st.seconds << " s)" << std::endl;
   return st;
 }
 
