@@ -40,23 +40,29 @@ namespace Quad_remeshing {
 
 namespace internal {
 
-// The position i (a corner at the target of the i-th edge) of a loop of m edges nearest the middle of its
-// longest side: `cum` holds the cumulated edge lengths (m + 1 values from 0), `corners` the sorted
-// positions of the corners (with none, the whole loop is the side). Returns m when that side has no
-// position left between its corners.
+// The length of side `c` of a loop, from its corner `corners[c]` to the next one, cyclically: `cum` holds
+// the cumulated edge lengths of the loop (its m edges: m + 1 values from 0), `corners` the sorted
+// positions of its corners (a corner at position i is at the target of the i-th edge).
+inline double loop_side_length(const std::vector<double>& cum, const std::vector<std::size_t>& corners, std::size_t c)
+{
+  const std::size_t m = cum.size() - 1;
+  const std::size_t i = corners[c], j = corners[(c + 1) % corners.size()];
+  return j > i ? cum[j] - cum[i] : cum[m] - cum[i] + cum[j];
+}
+
+// The position of a loop (see loop_side_length()) nearest the middle of its longest side (with no
+// corner, the whole loop is the side). Returns m when that side has no position left between its corners.
 inline std::size_t middle_of_longest_side(const std::vector<double>& cum, const std::vector<std::size_t>& corners)
 {
   const std::size_t m = cum.size() - 1;
-  auto side_length = [&](std::size_t c) { // from corners[c] to corners[c+1], cyclically
-    const std::size_t i = corners[c], j = corners[(c + 1) % corners.size()];
-    return j > i ? cum[j] - cum[i] : cum[m] - cum[i] + cum[j];
-  };
   std::size_t from = 0;
   double len = cum[m];
   if(!corners.empty()) {
     double l_best = -1.;
-    for(std::size_t c = 0; c < corners.size(); ++c)
-      if(side_length(c) > l_best) { l_best = side_length(c); from = corners[c]; }
+    for(std::size_t c = 0; c < corners.size(); ++c) {
+      const double l = loop_side_length(cum, corners, c);
+      if(l > l_best) { l_best = l; from = corners[c]; }
+    }
     len = l_best;
   }
   const double target_len = (corners.empty() ? 0. : cum[from]) + 0.5 * len;

@@ -96,10 +96,7 @@ struct Quadrangulation_layout
           if(T[i] != Layout::STRAIGHT) corners.push_back(i);
       }
       else ++relaxed_patches;
-      auto side_length = [&](std::size_t c) { // from corners[c] to corners[c+1], cyclically
-        const std::size_t i = corners[c], j = corners[(c + 1) % corners.size()];
-        return j > i ? cum[j] - cum[i] : cum[m] - cum[i] + cum[j];
-      };
+      auto side_length = [&](std::size_t c) { return loop_side_length(cum, corners, c); };
       while(corners.size() > 6)
       {
         std::size_t best = 0;

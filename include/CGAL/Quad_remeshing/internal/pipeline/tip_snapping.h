@@ -88,19 +88,19 @@ struct Tip_snapping_statistics
   their own size, and where the input narrows to a point smaller than a quad (an ear, a tusk, the tip of
   a nose) no quad vertex lies on it and the quads pass beside it (camelhead: 1.2% of the diagonal).
 
-  The input vertices (those on a face) farther than `tolerance` from the quads are taken farthest first;
-  each takes the nearest quad vertex within two mean quad edge lengths that is not on a constrained edge
-  (`qfeature`) or the border, not taken yet, whose normal (of its quads) agrees with the input vertex's
-  (the other side of a thin sheet is left alone), and not within two mean quad edge lengths of a tip
-  already taken; at most `max_tip_snaps`. Those vertices are moved onto their tips in a copy of `qmesh`,
-  which `smooth(copy, copy_feature, fixed)` smooths with them held (it must not move the vertices of
-  `fixed`). The copy is kept if the largest distance between the input and the quads, both ways (input
-  vertices to the quads; quad centres and edge midpoints to the input), falls and no more quads are
-  inverted (scaled Jacobian <= 0) than in `qmesh`. Then the next round (at most `max_tip_rounds`) does
-  the same on the kept copy, with the tips of the rounds before still held: an ear is a blade rather than
-  a point, and the points of its rim within two edge lengths of the tip taken first, left out then, get
-  vertices of their own (camelhead: 0.71% -> 0.49%). The last copy kept replaces `qmesh` (through
-  `keep(copy, copy_feature)`).
+  In a round, the input vertices (those on a face) farther than `tolerance` from the quads are taken
+  farthest first; each takes the nearest quad vertex within two mean quad edge lengths that is not on a
+  constrained edge (`qfeature`) or the border, not taken yet, whose normal (of its quads) agrees with the
+  input vertex's (the other side of a thin sheet is left alone), and not within one mean quad edge length
+  of a tip already taken in the round; at most `max_tip_snaps` in all. Those vertices are moved onto their
+  tips in a copy of the quads, which `smooth(copy, copy_feature, fixed)` smooths with them held (it must
+  not move the vertices of `fixed`). The copy is kept if the largest distance between the input and the
+  quads, both ways (input vertices to the quads; quad centres and edge midpoints to the input), falls and
+  no more quads are inverted (scaled Jacobian <= 0) than in `qmesh`; if not, the round is tried again with
+  tips two edge lengths apart. Then the next round (at most `max_tip_rounds`) does the same on the kept
+  copy, with the tips of the rounds before still held: an ear is a blade rather than a point, and the
+  points of its rim near the tip taken first, left out then, get vertices of their own (camelhead, qmeval:
+  0.71% -> 0.43% in 3 rounds). The last copy kept replaces `qmesh` (through `keep(copy, copy_feature)`).
 */
 template <typename TriangleMesh, typename QuadMesh, typename QuadFeatureMap, typename Smooth, typename Keep>
 Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, const QuadMesh& qmesh,
