@@ -66,7 +66,7 @@ bool stage_available(const std::string& name)
 const char* usage_text =
   "usage: quad_remesh INPUT [-o OUTPUT] [--edge-length L | --faces N | --scale S]\n"
   "                   [--sizing-tolerance F] [--feature-tolerance F] [--surface-tolerance F]\n"
-  "                   [--fidelity-tolerance F]\n"
+  "                   [--fidelity-tolerance F] [--component-resolution R]\n"
   "                   [--feature-angle DEG] [--feature-gap-angle DEG]\n"
   "                   [--features FILE]\n"
   "                   [--until STAGE] [--dump DIR]\n"
@@ -86,6 +86,9 @@ const char* usage_text =
   "  --sizing-tolerance F smaller quads (down to a quarter) where the surface or a feature line bends,\n"
   "                       keeping a quad's sagitta under F times the bounding-box diagonal (default\n"
   "                       0.002; 0: the uniform edge length everywhere)\n"
+  "  --component-resolution R  a connected component (but the largest) whose bounding-box diagonal\n"
+  "                       spans fewer than R quad edges gets shorter ones, down to a quarter, in the\n"
+  "                       remeshing and the quantization (default 8; 0: one length for all)\n"
   "  --feature-tolerance F quad edges along a bent feature line stay within F times the bounding-box\n"
   "                       diagonal of the line (default 0.002; 0: no bound)\n"
   "  --surface-tolerance F quad edges across a bend of the surface (a fillet) stay within F times the\n"
@@ -139,7 +142,8 @@ struct Options
          sizing_tolerance = -1., // negative: the default, see sizing()
          feature_tolerance = QR::internal::default_feature_tolerance,
          surface_tolerance = -1., // negative: the default, see surface()
-         fidelity_tolerance = -1.; // negative: the default, see fidelity()
+         fidelity_tolerance = -1., // negative: the default, see fidelity()
+         component_resolution = QR::internal::default_component_resolution;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
   bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true;
@@ -213,6 +217,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--threads") o.threads = unsigned(parse_number(a, value(), 1.));
     else if(a == "--time-limit") o.time_limit = parse_number(a, value(), 0.);
     else if(a == "--sizing-tolerance") o.sizing_tolerance = parse_number(a, value(), 0.);
+    else if(a == "--component-resolution") o.component_resolution = parse_number(a, value(), 0.);
     else if(a == "--feature-tolerance") o.feature_tolerance = parse_number(a, value(), 0.);
     else if(a == "--surface-tolerance") o.surface_tolerance = parse_number(a, value(), 0.);
     else if(a == "--fidelity-tolerance") o.fidelity_tolerance = parse_number(a, value(), 0.);
@@ -419,6 +424,7 @@ private:
       state_.tmesh, state_.feature,
       QRP::combine(QRP::quad_edge_length(state_.quad_edge_length).verbose(opt_.verbose),
                    QRP::adaptive_remeshing(opt_.adaptive_remeshing), QRP::hold_sharp_edges(opt_.hold_sharp_edges),
+                   QRP::component_resolution(opt_.component_resolution),
                    QRP::feature_angle(opt_.feature_angle),
                    QRP::vertex_is_feature_corner_map(state_.corner)));
     // later stages index elements densely: drop the removed ones (property maps are compacted with them)
@@ -498,7 +504,8 @@ private:
     const QR::internal::Quad_count_quantization qc = QR::internal::quantize_for_quad_count(
       state_.tmesh, *state_.layout, *state_.polygons, state_.feature, state_.quad_edge_length, opt_.sizing(),
       opt_.feature_tolerance, opt_.surface(), std::size_t((std::max)(0L, opt_.faces)), state_.arc_edge_counts,
-      [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) { return solve(problem, counts); });
+      [&](const QR::Side_quantization_problem& problem, std::vector<int>& counts) { return solve(problem, counts); },
+      opt_.component_resolution);
     const QR::internal::Pipeline_quantization_problem& qp = qc.qp;
     state_.quantization_problem = qp.problem;
     const QR::Side_quantization_statistics& st = qc.stats;

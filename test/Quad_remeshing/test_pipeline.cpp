@@ -201,6 +201,27 @@ BOOST_AUTO_TEST_CASE(teapot_vertices_keep_to_their_component)
   BOOST_TEST(f.hausdorff_max <= 0.008);
 }
 
+// A small part beside a large one: truck's steering wheel beside fandisk. At fandisk's quad edge length
+// (0.09) the wheel's spokes, 0.03 wide, were one quad wide and its quads crossed the holes between them
+// (qmeval: 0.77% of the diagonal, and a quad with a negative scaled Jacobian); remeshed and quantized at
+// its own length (a quarter), 0.33%.
+BOOST_AUTO_TEST_CASE(small_part_keeps_its_shape)
+{
+  const Mesh t = qr_test::fandisk_and_steering_wheel();
+  Mesh q;
+  const QR::Report r = QR::quad_remesh(t, q);
+  BOOST_TEST(r.find("remesh")->find("small_components")->number() == 1.);
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.components == 2u);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  const QR::Feature_fidelity f = fidelity_to_input(t, q);
+  BOOST_TEST_MESSAGE("fandisk and steering wheel: Hausdorff " << f.hausdorff_max << ", coverage " << f.feature_coverage);
+  BOOST_TEST(f.hausdorff_max <= 0.005);
+  BOOST_TEST(f.feature_coverage >= 0.99);
+}
+
 // spot: the smoothed quads cut the tips of the horns and ears short (qmeval: 0.78% of the diagonal off
 // the input without the refinement); the patches there get more quads, and the closer quads are kept.
 // Then the input vertices still farther than the tolerance from the quads (the horn tips, 0.47%) get the

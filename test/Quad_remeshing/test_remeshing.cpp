@@ -448,6 +448,52 @@ BOOST_AUTO_TEST_CASE(density_helpers)
   BOOST_CHECK_THROW(QR::remesh_for_quadrangulation(m, f, QR::parameters::quad_edge_length(-1.)), std::invalid_argument);
 }
 
+// A part much smaller than the rest is remeshed at its own, shorter length (`component_resolution`, 8
+// quad edges along its diagonal by default): truck's steering wheel beside fandisk gets quads of a
+// quarter of fandisk's (0.023 instead of 0.09, rounded down to a power of sqrt(2)): 1512 triangles
+// instead of 434, mean edge 0.007 instead of 0.019, while fandisk is remeshed as without the wheel's own
+// length (12232 triangles either way).
+BOOST_AUTO_TEST_CASE(small_component_gets_its_own_length)
+{
+  struct Result { QR::Remeshing_statistics stats; std::size_t wheel_faces = 0, fandisk_faces = 0; double wheel_edge = 0.; };
+  auto run = [](double resolution) {
+    Mesh m = qr_test::fandisk_and_steering_wheel();
+    const double wheel_x = PMP::bbox(load("fandisk.off")).xmax() + 0.05; // (between the two parts)
+    auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+    QR::detect_feature_edges(m, f);
+    Result r;
+    r.stats = QR::remesh_for_quadrangulation(m, f, QR::parameters::component_resolution(resolution));
+    std::size_t wheel_edges = 0;
+    for(auto e : m.edges())
+      if(m.point(m.source(m.halfedge(e))).x() > wheel_x)
+      {
+        r.wheel_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(m.source(m.halfedge(e))),
+                                                                         m.point(m.target(m.halfedge(e))))));
+        ++wheel_edges;
+      }
+    r.wheel_edge /= double((std::max)(wheel_edges, std::size_t(1)));
+    for(auto face : m.faces())
+      ++(m.point(m.target(m.halfedge(face))).x() > wheel_x ? r.wheel_faces : r.fandisk_faces);
+    return r;
+  };
+  const Result own = run(QR::internal::default_component_resolution), shared = run(0.);
+  BOOST_TEST_MESSAGE("steering wheel: " << shared.wheel_faces << " -> " << own.wheel_faces << " triangles, mean edge "
+                     << shared.wheel_edge << " -> " << own.wheel_edge << "; fandisk " << shared.fandisk_faces << " -> "
+                     << own.fandisk_faces);
+  BOOST_TEST(own.stats.components == 2u);
+  BOOST_TEST(own.stats.small_components == 1u);
+  BOOST_TEST(shared.stats.small_components == 0u);
+  BOOST_TEST(own.stats.smallest_target_edge_length == own.stats.target_edge_length / 4.,
+             boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(shared.stats.smallest_target_edge_length == shared.stats.target_edge_length);
+  // the wheel's edges are about its target: well under fandisk's
+  BOOST_TEST(own.wheel_edge < 1.5 * own.stats.smallest_target_edge_length);
+  BOOST_TEST(shared.wheel_edge > 2. * own.wheel_edge);
+  BOOST_TEST(own.wheel_faces > 3 * shared.wheel_faces);
+  // fandisk is remeshed at the global length either way
+  BOOST_TEST(std::abs(double(own.fandisk_faces) - double(shared.fandisk_faces)) < 0.02 * double(shared.fandisk_faces));
+}
+
 // Found by the fuzz target fuzz_quad_remesh (corpus_pipeline/crash_collinear_face): a closed
 // tetrahedron one of whose faces has three collinear corners (vertex 2 lies on the edge 0-1), which the
 // repair cannot collapse; CGAL's isotropic_remeshing crashed on it (segmentation fault), now it is a

@@ -4,6 +4,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
+#include <stdexcept>
 
 #include <string>
 
@@ -35,6 +40,21 @@ inline Mesh cap_plate(double lift = 0.005)
   const int f[10][3] = {{6, 5, 8}, {8, 1, 2}, {8, 2, 6}, {6, 2, 3}, {6, 3, 7},
                         {7, 3, 0}, {7, 0, 4}, {4, 0, 8}, {0, 1, 8}, {4, 8, 5}};
   for(const auto& t : f) m.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return m;
+}
+
+/// Two parts: fandisk and, 0.1 beside it along x, truck's steering wheel (a rim with three spokes 0.03 wide,
+/// 0.21 across: 7% of the whole diagonal; at fandisk's quad edge length, 0.09, its spokes are one quad wide).
+inline Mesh fandisk_and_steering_wheel()
+{
+  Mesh m, wheel;
+  if(!CGAL::IO::read_polygon_mesh(data_file("fandisk.off"), m) ||
+     !CGAL::IO::read_polygon_mesh(data_file("truck_steering_wheel.off"), wheel))
+    throw std::runtime_error("fandisk_and_steering_wheel: cannot read the bundled meshes");
+  const CGAL::Bbox_3 a = CGAL::Polygon_mesh_processing::bbox(m), b = CGAL::Polygon_mesh_processing::bbox(wheel);
+  const Kernel::Vector_3 shift(a.xmax() + 0.1 - b.xmin(), -b.ymin(), -b.zmin());
+  for(auto v : wheel.vertices()) wheel.point(v) = wheel.point(v) + shift;
+  CGAL::copy_face_graph(wheel, m);
   return m;
 }
 

@@ -112,6 +112,14 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamType{`double`}
       \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
     \cgalParamNEnd
+    \cgalParamNBegin{component_resolution}
+      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`, and used the same way by the
+                            quantization: a connected component other than the largest whose bounding-box
+                            diagonal spans fewer than this many quad edges gets shorter quads (down to a
+                            quarter of `quad_edge_length`); `0`: one length for every component}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`8`}
+    \cgalParamNEnd
     \cgalParamNBegin{feature_tolerance}
       \cgalParamDescription{the quad edges along a feature line (a crease or the boundary) that bends stay within
                             this fraction of the bounding-box diagonal of the line: the quantization gives such
@@ -247,9 +255,11 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
                                                           : default_quad_edge_length(tm));
   const bool adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_remeshing), false);
   const bool hold_sharp = choose_parameter(get_parameter(np, internal_np::hold_sharp_edges), true);
+  const double resolution =
+    choose_parameter(get_parameter(np, internal_np::component_resolution), internal::default_component_resolution);
   report["remesh"] = remesh_for_quadrangulation(tm, feature,
     QRP::combine(QRP::quad_edge_length(length).verbose(verbose), QRP::adaptive_remeshing(adaptive),
-                 QRP::hold_sharp_edges(hold_sharp),
+                 QRP::hold_sharp_edges(hold_sharp), QRP::component_resolution(resolution),
                  QRP::remeshing_tolerance(choose_parameter(get_parameter(np, internal_np::remeshing_tolerance),
                                                            internal::default_remeshing_tolerance)),
                  QRP::feature_angle(angle), QRP::vertex_is_feature_corner_map(corner))).report();
@@ -291,7 +301,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
     choose_parameter(get_parameter(np, internal_np::feature_tolerance), internal::default_feature_tolerance),
     choose_parameter(get_parameter(np, internal_np::surface_tolerance),
                      wanted_quads > 0 ? 0. : internal::default_surface_tolerance),
-    wanted_quads, counts, solve);
+    wanted_quads, counts, solve, resolution);
   const internal::Pipeline_quantization_problem& qp = qc.qp;
   report["quantize"] = qc.stats.report();
   budget.record("quantize", report["quantize"]);

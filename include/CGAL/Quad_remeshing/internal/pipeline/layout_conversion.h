@@ -354,7 +354,7 @@ std::pair<std::size_t, std::size_t> set_chord_minimums(Side_quantization_problem
 
 // The quantization problem of a traced layout as the pipeline builds it (quad_remesh(), the command
 // line and the stage benchmark share it): the targets in the local quad edge length of quad_sizing()
-// (uniform when `sizing_tolerance` <= 0), then the minimums of the bent arcs (set_chord_minimums()).
+// (uniform when `sizing_tolerance` <= 0 and no component is too small for `quad_edge_length`), then the minimums of the bent arcs (set_chord_minimums()).
 struct Pipeline_quantization_problem
 {
   Side_quantization_problem problem;
@@ -368,10 +368,11 @@ Pipeline_quantization_problem pipeline_quantization_problem(const TriangleMesh& 
                                                             const Quadrangulation_layout<TriangleMesh, Layout>& ql,
                                                             EdgeIsFeatureMap edge_is_feature, double quad_edge_length,
                                                             double sizing_tolerance, double feature_tolerance,
-                                                            double surface_tolerance = 0.)
+                                                            double surface_tolerance = 0.,
+                                                            double component_resolution = default_component_resolution)
 {
   Pipeline_quantization_problem r;
-  r.sizing = quad_sizing(tm, edge_is_feature, quad_edge_length, sizing_tolerance);
+  r.sizing = quad_sizing(tm, edge_is_feature, quad_edge_length, sizing_tolerance, component_resolution);
   r.problem = quantization_problem(tm, layout, ql, quad_edge_length, r.sizing);
   std::tie(r.bent_feature_arcs, r.bent_surface_arcs) =
     set_chord_minimums(r.problem, tm, layout, ql, edge_is_feature, feature_tolerance, surface_tolerance);

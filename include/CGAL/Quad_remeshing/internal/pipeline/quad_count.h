@@ -68,14 +68,14 @@ quantize_for_quad_count(const TriangleMesh& tm, const Layout& layout,
                         const Quadrangulation_layout<TriangleMesh, Layout>& ql, EdgeIsFeatureMap edge_is_feature,
                         double quad_edge_length, double sizing_tolerance, double feature_tolerance,
                         double surface_tolerance, std::size_t wanted_quads, std::vector<int>& counts,
-                        const Solve& solve)
+                        const Solve& solve, double component_resolution = default_component_resolution)
 {
   Quad_count_quantization r;
   double length = quad_edge_length, last_length = 0., last_count = 0.;
   for(;;)
   {
     r.qp = pipeline_quantization_problem(tm, layout, ql, edge_is_feature, length, sizing_tolerance,
-                                         feature_tolerance, surface_tolerance);
+                                         feature_tolerance, surface_tolerance, component_resolution);
     r.stats = solve(r.qp.problem, counts);
     r.quad_edge_length = length;
     ++r.solves;

@@ -8,6 +8,7 @@
 #define CGAL_QUAD_REMESHING_INTERNAL_PIPELINE_QUAD_SIZING_H
 
 #include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
+#include <CGAL/Quad_remeshing/internal/component_lengths.h>
 #include <CGAL/Quad_remeshing/internal/cross_field/face_geometry.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -30,7 +31,9 @@ namespace internal {
 /*
   Per vertex (indexed by `get(vertex_index, v)`, dense indices), the quad edge length h that keeps the
   sagitta of a quad diagonal, about h^2 k / 4 on a surface of normal curvature k, under `tolerance`
-  (absolute): h = sqrt(4 tolerance / k), clamped to [min_ratio * L, L] for the global length L.
+  (absolute): h = sqrt(4 tolerance / k), clamped to [min_ratio * U, U] for U the vertex's upper bound
+  (`upper`, by vertex index: the length of its component; empty: the global length L everywhere). A
+  tolerance that is not positive gives the upper bounds.
 
   The curvature of a vertex is the largest, over its non-feature edges, of the angle between the two
   face normals divided by the distance between the two face centroids (feature edges are creases the
@@ -40,7 +43,8 @@ namespace internal {
 */
 template <typename TriangleMesh, typename EdgeIsFeature>
 std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature, double L, double tolerance,
-                                          double min_ratio = 0.25, double grading = 0.5)
+                                          const std::vector<double>& upper = {}, double min_ratio = 0.25,
+                                          double grading = 0.5)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
@@ -48,7 +52,8 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   const auto vpm = get(CGAL::vertex_point, tm);
   const auto vim = get(CGAL::vertex_index, tm);
   const std::size_t nv = num_vertices(tm);
-  std::vector<double> h(nv, L);
+  std::vector<double> h = upper.size() == nv ? upper : std::vector<double>(nv, L);
+  const std::vector<double> bound = h;
   if(!(tolerance > 0.) || !(L > 0.)) return h;
 
   auto point = [&](typename GT::vertex_descriptor v) {
@@ -102,7 +107,7 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   }
   for(std::size_t i = 0; i < nv; ++i)
     if(curvature[i] > 0.)
-      h[i] = (std::max)(min_ratio * L, (std::min)(L, std::sqrt(4. * tolerance / curvature[i])));
+      h[i] = (std::max)(min_ratio * bound[i], (std::min)(bound[i], std::sqrt(4. * tolerance / curvature[i])));
 
   // grading: h(v) <= h(w) + grading |vw|, smallest sizes first
   typedef std::pair<double, std::size_t> Item;
@@ -112,7 +117,7 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   {
     const std::size_t i = std::size_t(get(vim, v));
     vertex_at[i] = v;
-    if(h[i] < L) queue.emplace(h[i], i);
+    if(h[i] < L) queue.emplace(h[i], i); // (the components' bounds too: a component is one piece)
   }
   while(!queue.empty())
   {
@@ -135,13 +140,18 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   return h;
 }
 
-// `curvature_quad_sizing()` with the tolerance a fraction of the bounding-box diagonal; no sizing
-// (an empty vector: the uniform length) when that fraction is not positive.
+// `curvature_quad_sizing()` with the tolerance a fraction of the bounding-box diagonal, under the length of
+// each vertex's component (vertex_component_quad_edge_lengths(), `component_resolution`); no sizing (an empty
+// vector: the uniform length) when that fraction is not positive and every component has the length L.
 template <typename TriangleMesh, typename EdgeIsFeature>
-std::vector<double> quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature, double L, double relative_tolerance)
+std::vector<double> quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature, double L, double relative_tolerance,
+                                double component_resolution = default_component_resolution)
 {
-  if(!(relative_tolerance > 0.) || num_vertices(tm) == 0) return {};
-  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * mesh_bbox_diagonal(tm));
+  if(num_vertices(tm) == 0) return {};
+  const std::vector<double> upper = vertex_component_quad_edge_lengths(tm, L, component_resolution);
+  const bool uniform = std::all_of(upper.begin(), upper.end(), [L](double u) { return !(u < L); });
+  if(!(relative_tolerance > 0.)) return uniform ? std::vector<double>() : upper;
+  return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * mesh_bbox_diagonal(tm), upper);
 }
 
 } // namespace internal
