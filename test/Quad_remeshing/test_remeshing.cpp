@@ -456,9 +456,9 @@ BOOST_AUTO_TEST_CASE(density_helpers)
 BOOST_AUTO_TEST_CASE(small_component_gets_its_own_length)
 {
   struct Result { QR::Remeshing_statistics stats; std::size_t wheel_faces = 0, fandisk_faces = 0; double wheel_edge = 0.; };
-  auto run = [](double resolution) {
+  const double wheel_x = PMP::bbox(load("fandisk.off")).xmax() + 0.05; // (between the two parts)
+  auto run = [wheel_x](double resolution) {
     Mesh m = qr_test::fandisk_and_steering_wheel();
-    const double wheel_x = PMP::bbox(load("fandisk.off")).xmax() + 0.05; // (between the two parts)
     auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
     QR::detect_feature_edges(m, f);
     Result r;

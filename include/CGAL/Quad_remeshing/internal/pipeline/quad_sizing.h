@@ -117,7 +117,7 @@ std::vector<double> curvature_quad_sizing(const TriangleMesh& tm, EdgeIsFeature 
   {
     const std::size_t i = std::size_t(get(vim, v));
     vertex_at[i] = v;
-    if(h[i] < L) queue.emplace(h[i], i); // (the components' bounds too: a component is one piece)
+    if(h[i] < L) queue.emplace(h[i], i); // (a small component's vertices too: no edge leaves a component)
   }
   while(!queue.empty())
   {
@@ -149,8 +149,8 @@ std::vector<double> quad_sizing(const TriangleMesh& tm, EdgeIsFeature is_feature
 {
   if(num_vertices(tm) == 0) return {};
   const std::vector<double> upper = vertex_component_quad_edge_lengths(tm, L, component_resolution);
-  const bool uniform = std::all_of(upper.begin(), upper.end(), [L](double u) { return !(u < L); });
-  if(!(relative_tolerance > 0.)) return uniform ? std::vector<double>() : upper;
+  if(!(relative_tolerance > 0.))
+    return std::all_of(upper.begin(), upper.end(), [L](double u) { return !(u < L); }) ? std::vector<double>() : upper;
   return curvature_quad_sizing(tm, is_feature, L, relative_tolerance * mesh_bbox_diagonal(tm), upper);
 }
 
