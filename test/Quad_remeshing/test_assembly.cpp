@@ -3,6 +3,7 @@
 
 #include <CGAL/Quad_remeshing/assemble_quad_mesh.h>
 #include <CGAL/Quad_remeshing/quadrangulate_polygon.h>
+#include <CGAL/Quad_remeshing/internal/assembly/parameterize_patch.h>
 #include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
 
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -11,6 +12,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <vector>
@@ -363,6 +365,43 @@ BOOST_AUTO_TEST_CASE(pattern_closing_a_slit_at_a_corner)
     for(auto h : halfedges_around_target(v, q)) border_halfedges += is_border(h, q);
     BOOST_TEST(border_halfedges <= 1u);
   }
+}
+
+// A patch of truck remeshed with the adaptive pass: its free vertex 2 lies at the midpoint of the fixed
+// vertices 1 and 4 and on the fixed vertex 3. The angle at 2 towards 3 used to be atan2(0, -0) = pi, its
+// mean-value weight infinite, and the map NaN (the smoothing then crashed on a NaN point). Coincident
+// vertices give no weight; the map is then the weighted average of 0, 1 and 4.
+BOOST_AUTO_TEST_CASE(mean_value_map_with_a_vertex_on_another)
+{
+  QR::internal::Patch_map m;
+  m.points = {{{0.705449, 0.0930744, 0.213573}},
+              {{0.684256, 0.0705907, 0.230798}},
+              {{0.6957005, 0.07376135, 0.2315395}},
+              {{0.6957005, 0.07376135, 0.2315395}},
+              {{0.707145, 0.076932, 0.232281}}};
+  m.triangles = {{{0, 1, 2}}, {{3, 4, 2}}, {{2, 4, 0}}, {{2, 1, 3}}};
+  m.fixed = {true, true, false, true, true};
+  const double s = std::sqrt(0.75);
+  m.uv = {{{0., 1.}}, {{-s, -0.5}}, {{0., 0.}}, {{-s / 3., -0.5}}, {{s, -0.5}}};
+  QR::internal::solve_mean_value_map(m);
+  const std::array<double, 2> uv = m.uv[2];
+  BOOST_TEST_REQUIRE(std::isfinite(uv[0]));
+  BOOST_TEST_REQUIRE(std::isfinite(uv[1]));
+  // mean-value weights tan(alpha / 2) / length from the triangles (0, 1, 2) and (2, 4, 0)
+  auto angle = [&](std::size_t a, std::size_t b, std::size_t c) {
+    const Point_3 pa(m.points[a][0], m.points[a][1], m.points[a][2]), pb(m.points[b][0], m.points[b][1], m.points[b][2]),
+      pc(m.points[c][0], m.points[c][1], m.points[c][2]);
+    return std::acos(((pb - pa) * (pc - pa)) / std::sqrt((pb - pa).squared_length() * (pc - pa).squared_length()));
+  };
+  auto length = [&](std::size_t a, std::size_t b) {
+    return std::sqrt(CGAL::squared_distance(Point_3(m.points[a][0], m.points[a][1], m.points[a][2]),
+                                            Point_3(m.points[b][0], m.points[b][1], m.points[b][2])));
+  };
+  const double t1 = std::tan(angle(2, 0, 1) / 2.), t2 = std::tan(angle(2, 4, 0) / 2.);
+  const double w0 = t1 / length(2, 0) + t2 / length(2, 0), w1 = t1 / length(2, 1), w4 = t2 / length(2, 4);
+  const double u = (w1 * -s + w4 * s) / (w0 + w1 + w4), v = (w0 * 1. + (w1 + w4) * -0.5) / (w0 + w1 + w4);
+  BOOST_TEST(uv[0] == u, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(uv[1] == v, boost::test_tools::tolerance(1e-9));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

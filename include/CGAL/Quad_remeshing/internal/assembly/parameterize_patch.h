@@ -44,11 +44,15 @@ inline double angle_at(const std::array<double, 3>& a, const std::array<double, 
   const double cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
   const double s = std::sqrt(cx * cx + cy * cy + cz * cz);
   const double d = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  // (no angle where b or c coincides with a: atan2(0, -0) would be pi, and its weight infinite)
+  if(s == 0. && d == 0.) return 0.;
   return std::atan2(s, d);
 }
 
 // Solves for the free vertices with mean-value weights (Floater 2003): they are positive, so with a
-// convex boundary polygon the map is a bijection (Tutte/Floater), whatever the triangle shapes.
+// convex boundary polygon the map is a bijection (Tutte/Floater), whatever the triangle shapes. Should
+// the weights still break down (an overflow makes the map NaN), the uniform weights of Tutte's map, which
+// always work on a connected patch, are used instead.
 inline void solve_mean_value_map(Patch_map& m)
 {
   const std::size_t n = m.points.size();
@@ -63,37 +67,42 @@ inline void solve_mean_value_map(Patch_map& m)
     for(int i = 0; i < 3; ++i) s += (m.points[a][i] - m.points[b][i]) * (m.points[a][i] - m.points[b][i]);
     return std::sqrt(s);
   };
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd bx = Eigen::VectorXd::Zero(Eigen::Index(nfree)), by = Eigen::VectorXd::Zero(Eigen::Index(nfree));
-  std::vector<double> diagonal(nfree, 0.);
-  // For the edge (i, j) in triangle (i, j, k), the angle at i between ij and ik contributes tan(angle/2)/|ij|.
-  for(const auto& t : m.triangles)
-    for(int c = 0; c < 3; ++c)
-    {
-      const std::size_t i = t[c], j = t[(c + 1) % 3], k = t[(c + 2) % 3];
-      if(m.fixed[i]) continue;
-      const double alpha = angle_at(m.points[i], m.points[j], m.points[k]);
-      const double half = std::tan(0.5 * alpha);
-      for(std::size_t other : {j, k})
+  // true if the map has finite coordinates
+  auto solve = [&](bool uniform) {
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::VectorXd bx = Eigen::VectorXd::Zero(Eigen::Index(nfree)), by = Eigen::VectorXd::Zero(Eigen::Index(nfree));
+    std::vector<double> diagonal(nfree, 0.);
+    // For the edge (i, j) in triangle (i, j, k), the angle at i between ij and ik contributes tan(angle/2)/|ij|
+    // (uniform: 1/2, each interior edge seen from its two triangles).
+    for(const auto& t : m.triangles)
+      for(int c = 0; c < 3; ++c)
       {
-        const double l = (std::max)(length(i, other), 1e-300);
-        const double w = half / l;
-        const Eigen::Index row = Eigen::Index(index[i]);
-        diagonal[index[i]] += w;
-        if(m.fixed[other]) { bx[row] += w * m.uv[other][0]; by[row] += w * m.uv[other][1]; }
-        else triplets.emplace_back(row, Eigen::Index(index[other]), -w);
+        const std::size_t i = t[c], j = t[(c + 1) % 3], k = t[(c + 2) % 3];
+        if(m.fixed[i]) continue;
+        const double half = uniform ? 0. : std::tan(0.5 * angle_at(m.points[i], m.points[j], m.points[k]));
+        for(std::size_t other : {j, k})
+        {
+          const double w = uniform ? 0.5 : half / (std::max)(length(i, other), 1e-300);
+          const Eigen::Index row = Eigen::Index(index[i]);
+          diagonal[index[i]] += w;
+          if(m.fixed[other]) { bx[row] += w * m.uv[other][0]; by[row] += w * m.uv[other][1]; }
+          else triplets.emplace_back(row, Eigen::Index(index[other]), -w);
+        }
       }
-    }
-  for(std::size_t r = 0; r < nfree; ++r)
-    triplets.emplace_back(Eigen::Index(r), Eigen::Index(r), diagonal[r] > 0 ? diagonal[r] : 1.);
-  Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(nfree), static_cast<Eigen::Index>(nfree));
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-  solver.compute(A);
-  if(solver.info() != Eigen::Success) throw std::runtime_error("patch parameterization: factorization failed");
-  const Eigen::VectorXd x = solver.solve(bx), y = solver.solve(by);
-  for(std::size_t v = 0; v < n; ++v)
-    if(!m.fixed[v]) m.uv[v] = {x[Eigen::Index(index[v])], y[Eigen::Index(index[v])]};
+    for(std::size_t r = 0; r < nfree; ++r)
+      triplets.emplace_back(Eigen::Index(r), Eigen::Index(r), diagonal[r] > 0 ? diagonal[r] : 1.);
+    Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(nfree), static_cast<Eigen::Index>(nfree));
+    A.setFromTriplets(triplets.begin(), triplets.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+    solver.compute(A);
+    if(solver.info() != Eigen::Success) return false;
+    const Eigen::VectorXd x = solver.solve(bx), y = solver.solve(by);
+    if(!x.allFinite() || !y.allFinite()) return false;
+    for(std::size_t v = 0; v < n; ++v)
+      if(!m.fixed[v]) m.uv[v] = {x[Eigen::Index(index[v])], y[Eigen::Index(index[v])]};
+    return true;
+  };
+  if(!solve(false) && !solve(true)) throw std::runtime_error("patch parameterization: factorization failed");
 }
 
 inline void build_location_grid(Patch_map& m)
