@@ -4,6 +4,7 @@
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 #include <CGAL/Quad_remeshing/IO.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Random.h>
@@ -307,6 +308,50 @@ BOOST_AUTO_TEST_CASE(untangling_never_slides_a_vertex_onto_a_corner)
   BOOST_TEST(s.inverted_after <= s.inverted_before);
   for(auto e : edges(q))
     BOOST_TEST(CGAL::squared_distance(q.point(source(e, q)), q.point(target(e, q))) > 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(a_vertex_keeps_to_its_sheet_over_another_facing_the_same_way)
+{
+  // One component folded twice (a Z): the unit square at z = 0 facing up, a wall down along x = 1, a
+  // floor at z = -1 facing down, a wall up along x = -0.5, and a sheet at z = -0.04 facing up again,
+  // under the square. The quads of a folded 8 x 8 grid on the square try moves a quarter or half of
+  // their edge length (0.125) off it, whose closest point is on the lower sheet: its normal and
+  // component are those of the square's, so only the connection through the surface tells them apart
+  // (truck's hood, 0.017 above a sheet of its own component that faces up too after the repair).
+  const int n = 8;
+  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
+    if(i == 2 && j == 2) { x = 3.6 / n; y = 3.5 / n; }
+    if(i == 6 && j == 5) { x = 4.4 / n; y = 5.3 / n; }
+  });
+  Mesh& t = g.t;
+  const double gap = 0.04;
+  auto corner = [&](double x, double y, double z) {
+    for(auto v : vertices(t))
+      if(t.point(v) == Point_3(x, y, z)) return v;
+    return t.add_vertex(Point_3(x, y, z));
+  };
+  auto b = corner(1, 0, 0), c = corner(1, 1, 0), b1 = corner(1, 0, -1), c1 = corner(1, 1, -1);
+  auto a2 = corner(-0.5, 0, -1), d2 = corner(-0.5, 1, -1), a3 = corner(-0.5, 0, -gap), d3 = corner(-0.5, 1, -gap);
+  auto e = corner(0.9, 0, -gap), f = corner(0.9, 1, -gap);
+  for(std::array<Mesh::Vertex_index, 3> tri : {std::array<Mesh::Vertex_index, 3>{c, b, b1}, {c, b1, c1}, {c1, b1, a2},
+                                                {c1, a2, d2}, {d2, a2, a3}, {d2, a3, d3}, {d3, a3, e}, {d3, e, f}})
+    BOOST_TEST_REQUIRE(t.add_face(tri[0], tri[1], tri[2]) != Mesh::null_face());
+  BOOST_TEST_REQUIRE(t.is_valid(false));
+  // the features: the border and the folds
+  g.tf = get(CGAL::dynamic_edge_property_t<bool>(), t);
+  for(auto ed : edges(t))
+  {
+    const auto h = halfedge(ed, t);
+    put(g.tf, ed, is_border(ed, t) || CGAL::scalar_product(PMP::compute_face_normal(face(h, t), t),
+                                                            PMP::compute_face_normal(face(opposite(h, t), t), t)) < 0.5);
+  }
+  Mesh& q = g.q;
+  BOOST_TEST_REQUIRE(min_sj(q) <= 0.);
+
+  const QR::Quad_smoothing_statistics s = QR::smooth_quad_mesh(q, t, g.tf);
+  BOOST_TEST(s.inverted_after == 0u);
+  for(auto v : vertices(q))
+    BOOST_TEST(std::abs(q.point(v).z()) < 1e-12, "vertex at " << q.point(v) << " left the square's sheet");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

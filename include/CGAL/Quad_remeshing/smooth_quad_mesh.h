@@ -230,7 +230,10 @@ void collect_garbage_of(Mesh&) {}
   normal is turned by 75 degrees or more from that of the face the vertex started on (the other sheet of
   a thin plate, the other side of a crease), or on another connected component (where components pass
   through each other), is replaced by the closest point on the nearby faces of its component that
-  agree with it; vertices on a feature line slide along it: they are
+  agree with it. A free vertex also keeps to its sheet: a closest point on a face that is not connected
+  to the face under the vertex through faces near it (within twice the move) is replaced by the closest
+  point on those faces (two sheets of one component close together that face the same way). Vertices
+  on a feature line slide along it: they are
   projected onto the feature line of the triangle mesh they started on; feature corners and
   constrained vertices do not move. A move that would add an incident quad with a scaled Jacobian
   <= 0, or lower the smallest scaled Jacobian of the incident quads below both its previous value and
@@ -501,17 +504,88 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     const double dot = CGAL::to_double(m * get(home_normal, v));
     return dot > 0. && dot * dot > cos2_75_degrees * CGAL::to_double(m.squared_length());
   };
+  // A free vertex also keeps to the sheet it is on. Where two sheets of one component lie close together
+  // and face the same way (truck's hood, 0.017 above a sheet whose faces the repair turned up too), the
+  // closest point of a position tried by the untangling (a step off the surface) can be on the other
+  // sheet: truck's output was 0.0007 from a hood point before the smoothing, 0.0136 after. The sheet
+  // near a vertex is the faces connected to the one under its current position through faces whose
+  // bounding boxes overlap the box of half-width `reach` around it (twice the move, plus a margin); a
+  // closest point on a face that is not among them is replaced by the closest point on them (on a face
+  // on the vertex's own side if there is one).
+  const t_face no_face = boost::graph_traits<TriangleMesh>::null_face();
+  std::vector<t_face> sheet;
+  // the face under each vertex's position, remembered from the projection that put it there or from a
+  // closest-point query, which spares one query per move
+  auto last_point = get(CGAL::dynamic_vertex_property_t<Point_3>(), qmesh);
+  auto last_face = get(CGAL::dynamic_vertex_property_t<t_face>(), qmesh);
+  for(q_vertex v : vertices(qmesh)) put(last_face, v, no_face);
+  auto remember = [&](q_vertex v, const Point_3& q, t_face f) {
+    put(last_point, v, q);
+    put(last_face, v, f);
+    return q;
+  };
+  auto face_under = [&](q_vertex v) {
+    const Point_3& current = get(qvpm, v);
+    if(get(last_face, v) == no_face || get(last_point, v) != current)
+      remember(v, current, tree.closest_point_and_primitive(current).second);
+    return get(last_face, v);
+  };
+  // `p` projected onto the sheet of `v` when its closest face `target` is not on it (else false)
+  auto off_sheet_projection = [&](q_vertex v, const Point_3& p, t_face target, Point_3& projection) -> bool {
+    const Point_3& current = get(qvpm, v);
+    const t_face start = face_under(v);
+    if(start == target) return false;
+    // (the faces around the corners of the start face first: most moves end there)
+    for(auto th : halfedges_around_face(halfedge(start, tmesh), tmesh))
+      for(t_face g : faces_around_target(th, tmesh))
+        if(g == target) return false;
+    const double reach = 2. * std::sqrt(CGAL::to_double(CGAL::squared_distance(p, current))) + box_scale;
+    const double x = CGAL::to_double(current.x()), y = CGAL::to_double(current.y()), z = CGAL::to_double(current.z());
+    const CGAL::Bbox_3 within_reach(x - reach, y - reach, z - reach, x + reach, y + reach, z + reach);
+    sheet.assign(1, start);
+    for(std::size_t i = 0; i < sheet.size(); ++i)
+      for(auto th : halfedges_around_face(halfedge(sheet[i], tmesh), tmesh))
+      {
+        const t_face g = face(opposite(th, tmesh), tmesh);
+        if(g == no_face || !CGAL::do_overlap(triangle_of(g).bbox(), within_reach) ||
+           std::find(sheet.begin(), sheet.end(), g) != sheet.end())
+          continue;
+        if(g == target) return false;
+        sheet.push_back(g);
+      }
+    bool found_own = false;
+    t_face best_face = no_face;
+    double best_d = 0.;
+    for(t_face f : sheet)
+    {
+      const bool own = on_own_side(f, v);
+      if(found_own && !own) continue;
+      const Point_3 q = K().construct_projected_point_3_object()(triangle_of(f), p);
+      const double d = CGAL::to_double(CGAL::squared_distance(p, q));
+      if(best_face == no_face || (own && !found_own) || d < best_d)
+      {
+        projection = q;
+        best_face = f;
+        best_d = d;
+      }
+      found_own = found_own || own;
+    }
+    remember(v, projection, best_face);
+    return true;
+  };
   auto project_on_own_side = [&](q_vertex v, const Point_3& p) {
     const auto closest = tree.closest_point_and_primitive(p);
+    Point_3 on_sheet;
+    if(get(has_home, v) && off_sheet_projection(v, p, closest.second, on_sheet)) return on_sheet;
     if(!get(has_home, v)) {
       const Vector_3 m = face_normal(closest.second);
       const double length = std::sqrt(CGAL::to_double(m.squared_length()));
       put(home_normal, v, length > 0. ? m / length : m);
       put(home_component, v, get(component, closest.second));
       put(has_home, v, 1);
-      return closest.first;
+      return remember(v, closest.first, closest.second);
     }
-    if(on_own_side(closest.second, v)) return closest.first;
+    if(on_own_side(closest.second, v)) return remember(v, closest.first, closest.second);
     // at a crease the closest point is often on the crease itself (an edge or a vertex of the face),
     // shared with a face on the own side
     for(auto th : halfedges_around_face(halfedge(closest.second, tmesh), tmesh)) {
@@ -543,6 +617,10 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return closest.first;
   };
   auto place = [&](q_vertex v, const Point_3& p) {
+    // (a target from a collapsed quad can be NaN: the vertex stays where it is)
+    if(!(std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+         std::isfinite(CGAL::to_double(p.z()))))
+      return get(qvpm, v);
     return get(kind, v) == 1 ? lines.project(get(line_of, v), p) : project_on_own_side(v, p);
   };
   for(q_vertex v : vertices(qmesh)) // the vertices lie on the surface: each is at home where it is
