@@ -123,7 +123,7 @@ const char* usage_text =
   "                       machine's speed and load\n"
   "  --adaptive-remeshing run the adaptive remeshing pass (experimental)\n"
   "  --no-hold-sharp-edges let the uniform remeshing pass smooth away the sharp edges that are not\n"
-  "                       features (held in place by default)\n"
+  "                       features and the long creases (held in place by default)\n"
   "  --verbose            print progress of every stage\n"
   "  --quiet              print nothing but errors\n"
   "  --list-stages        print every stage and whether this build can run it\n"

@@ -352,6 +352,61 @@ BOOST_AUTO_TEST_CASE(uniform_pass_holds_sharp_edges)
   BOOST_CHECK_GE(coverage(smoothed.features, held.features, diag, 1e-3 * diag), 0.99);
 }
 
+// A 12-sided prism of radius 1, 3 long: its side creases (30 degrees) are not features, and its facets
+// are 0.52 wide. At the quad edge length 1.2 (target 0.6) the creases are long (3 > 2.5 x 0.6) and their
+// facets narrower than the target: the remeshed edges would span a facet and both its creases, as on
+// truck's faceted wheel arches (0.65% of the diagonal), so they are held. At 0.8 (target 0.4) the facets
+// are wider than the target, and the creases are not held.
+BOOST_AUTO_TEST_CASE(long_creases_beside_narrow_facets_are_held)
+{
+  const int n = 12;
+  const double height = 3.;
+  Mesh m;
+  std::vector<Mesh::Vertex_index> bottom, top;
+  for(int i = 0; i < n; ++i)
+  {
+    const double a = 2. * CGAL_PI * i / n;
+    bottom.push_back(m.add_vertex(Point_3(std::cos(a), std::sin(a), 0.)));
+    top.push_back(m.add_vertex(Point_3(std::cos(a), std::sin(a), height)));
+  }
+  const auto bottom_centre = m.add_vertex(Point_3(0., 0., 0.)), top_centre = m.add_vertex(Point_3(0., 0., height));
+  for(int i = 0; i < n; ++i)
+  {
+    const int j = (i + 1) % n;
+    m.add_face(bottom[i], bottom[j], top[j]);
+    m.add_face(bottom[i], top[j], top[i]);
+    m.add_face(bottom_centre, bottom[j], bottom[i]);
+    m.add_face(top_centre, top[i], top[j]);
+  }
+  BOOST_TEST_REQUIRE(CGAL::is_closed(m));
+  const double diag = std::sqrt(8. + height * height);
+  std::vector<Point_3> on_creases; // 100 points along each side crease
+  for(int i = 0; i < n; ++i)
+    for(int k = 0; k <= 100; ++k)
+      on_creases.push_back(CGAL::barycenter(m.point(bottom[i]), 1. - k / 100., m.point(top[i]), k / 100.));
+
+  auto f = m.add_property_map<Mesh::Edge_index, bool>("e:f", false).first;
+  QR::detect_feature_edges(m, f);
+  BOOST_TEST_REQUIRE(std::count_if(m.edges().begin(), m.edges().end(), [&](auto e) { return f[e]; }) == 2 * n); // the rims
+  auto run = [&](double quad_edge_length, bool hold, std::size_t& held) {
+    Mesh r = m;
+    auto rf = r.property_map<Mesh::Edge_index, bool>("e:f").first;
+    held = QR::remesh_for_quadrangulation(r, rf, QR::parameters::hold_sharp_edges(QR::parameters::quad_edge_length(quad_edge_length), hold))
+             .sharp_edges_held;
+    return PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(on_creases, r) / diag;
+  };
+  std::size_t held_count = 0, not_held_count = 0, wide_count = 0;
+  const double held = run(1.2, true, held_count), cut = run(1.2, false, not_held_count);
+  BOOST_TEST_MESSAGE("side creases within " << held << " of the diagonal from the remeshed surface (" << cut
+                     << " without holding them)");
+  BOOST_TEST(held_count == std::size_t(n));
+  BOOST_TEST(not_held_count == 0u);
+  BOOST_TEST(held < 1e-6);
+  BOOST_TEST(cut > 5e-3);
+  run(0.8, true, wide_count);
+  BOOST_TEST(wide_count == 0u);
+}
+
 // The uniform pass alone (the default): the sizing field is the uniform length; a looser tolerance refines less.
 BOOST_AUTO_TEST_CASE(adaptive_parameters)
 {

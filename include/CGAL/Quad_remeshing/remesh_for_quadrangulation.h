@@ -247,6 +247,18 @@ constexpr double even_split_blowup = 20.;
 // the coarse pass's edge length in target lengths: its own split pass then makes about 16 times fewer faces
 // (on abc_00000009, factors 3 to 6 gave the same time within noise)
 constexpr double coarse_pass_factor = 4.;
+// With `hold_sharp_edges`, a long crease beside a narrow facet is held too: an edge at least this many
+// target lengths long (1.25 quad edge lengths) whose dihedral angle is above long_crease_angle, though
+// below the feature angle, and one of whose faces is narrower than the target length across it. Truck's
+// front wheel arches are coarse fillets of a few such facets (creases of 20 to 27 degrees, 0.12 long,
+// three target lengths): a remeshed edge spans a facet and both its creases, and the remeshed surface
+// was 0.65% of the diagonal away from the input there before any quad was made. Where the facets are
+// wider than the target (draco_test_nm's cylinder, 22 degrees), one crease at a time costs little, and
+// holding them took its smallest scaled Jacobian from 0.30 to 0.017; shorter edges (twice the target
+// length) held on spot put its remeshed surface farther from the input (0.22% of the diagonal), and 25
+// degrees left truck at 0.53% (qmeval).
+constexpr double long_crease_length = 2.5;
+constexpr double long_crease_angle = 20.;
 
 // Pass 2: the sizing field starts from the paper's radius-ratio rule (capped at the uniform length) and
 // is refined where the measured distance to the input exceeds 70% of the tolerance (the remaining 30%
@@ -382,7 +394,12 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
 
   With `hold_sharp_edges` (the default) or the adaptive pass, the passes hold in place, besides the
   features, the input's other sharp edges (dihedral angle above `feature_angle`, e.g. the short chains that
-  the erosion of `detect_feature_edges()` removed): they follow the rules of the features below, their
+  the erosion of `detect_feature_edges()` removed) and its long creases beside a narrow facet: edges at
+  least 2.5 target lengths (1.25 `L`) long whose dihedral angle is above 20 degrees (or `feature_angle` if
+  smaller) and one of whose two faces is narrower than the target length across the edge. A coarse fillet
+  of a few such facets (truck's front wheel arches) was otherwise cut across by the remeshed edges, each
+  spanning a facet and both its creases, 0.65% of the diagonal from the input before any quad was made.
+  The held lines follow the rules of the features below, their
   ends, junctions and turns of more than 45 degrees never move, so the surface keeps its creases; at the
   end only the edges on an input feature line are features again (an edge goes to the nearer of the two
   kinds of input line). Without the adaptive pass, the vertices where a constrained line bends away
@@ -471,8 +488,9 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
     \cgalParamNEnd
     \cgalParamNBegin{hold_sharp_edges}
       \cgalParamDescription{if `true`, the uniform pass holds in place, as it does the features, the input edges
-                            that are not features but whose dihedral angle is above `feature_angle`; the adaptive
-                            pass always holds them. They are not features in the result}
+                            that are not features but whose dihedral angle is above `feature_angle`, and the long
+                            creases beside a narrow facet (see above); the adaptive pass always holds them. They
+                            are not features in the result}
       \cgalParamType{`bool`}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
@@ -748,6 +766,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   if(hold_sharp)
   {
     const double cos_sharp = std::cos(sharp_angle * CGAL_PI / 180.);
+    const double cos_long_crease = std::cos((std::min)(sharp_angle, internal::long_crease_angle) * CGAL_PI / 180.);
+    const double long_crease_squared = CGAL::square(internal::long_crease_length * st.target_edge_length);
     for(auto e : edges(tmesh))
     {
       bool c = get(edge_is_feature_map, e);
@@ -761,7 +781,13 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
         const auto n1 = normal(h);
         const auto n2 = normal(opposite(h, tmesh));
         const double l = std::sqrt(CGAL::to_double(n1 * n1) * CGAL::to_double(n2 * n2));
-        if(l > 0. && CGAL::to_double(n1 * n2) / l < cos_sharp)
+        // a long crease beside a narrow facet: the widths of the faces across the edge are |n| / length
+        const double length_squared =
+          CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tmesh)), get(vpm, target(h, tmesh))));
+        const bool long_crease =
+          length_squared >= long_crease_squared &&
+          (std::min)(CGAL::to_double(n1 * n1), CGAL::to_double(n2 * n2)) < CGAL::square(st.target_edge_length) * length_squared;
+        if(l > 0. && CGAL::to_double(n1 * n2) / l < (long_crease ? cos_long_crease : cos_sharp))
         {
           c = true;
           ++st.sharp_edges_held;
