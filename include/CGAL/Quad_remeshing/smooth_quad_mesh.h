@@ -711,6 +711,39 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     put(qvpm, v, best_p);
     return best_p != old_p;
   };
+  // A vertex's tries depend only on the corners of its quads: one that found no better place is not
+  // tried again until one of them has moved, as long as only untangle_vertex() moves vertices (this
+  // halves the untangling's time on truck). The memo keeps stamps of one clock: when each vertex last
+  // moved, and when each last found nothing.
+  struct Untangling_memo
+  {
+    std::size_t clock = 0;
+    std::map<q_vertex, std::size_t> moved_at, failed_at;
+    static std::size_t stamp(const std::map<q_vertex, std::size_t>& at, q_vertex v)
+    {
+      const auto it = at.find(v);
+      return it == at.end() ? std::size_t(0) : it->second;
+    }
+  };
+  auto untangle_vertex_again = [&](q_vertex v, Untangling_memo& memo) {
+    const std::size_t failed = Untangling_memo::stamp(memo.failed_at, v);
+    if(failed != 0)
+    {
+      bool moved = false;
+      for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
+        if(f != QGT::null_face())
+          for(q_vertex w : vertices_around_face(halfedge(f, qmesh), qmesh))
+            moved = moved || Untangling_memo::stamp(memo.moved_at, w) > failed;
+      if(!moved) return false;
+    }
+    if(untangle_vertex(v))
+    {
+      memo.moved_at[v] = ++memo.clock;
+      return true;
+    }
+    memo.failed_at[v] = ++memo.clock;
+    return false;
+  };
   // the poor quads among `within`, or among all quads
   auto poor_quads = [&](const std::vector<q_face>* within) {
     std::vector<q_face> poor;
@@ -727,24 +760,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     // every quad that gets worse is around a vertex that moved, so the work list of a pass is the bad
     // quads around the previous pass's candidates
     std::vector<q_face> bad = poor_quads(within);
-    // A vertex's tries depend only on the corners of its quads: one that found no better place is not
-    // tried again until one of them has moved (on truck this halves the untangling's time). Stamps of
-    // one clock: when each vertex last moved, and when each last found nothing.
-    std::size_t clock = 0;
-    std::map<q_vertex, std::size_t> moved_at, failed_at;
-    auto stamp = [](const std::map<q_vertex, std::size_t>& at, q_vertex v) {
-      const auto it = at.find(v);
-      return it == at.end() ? std::size_t(0) : it->second;
-    };
-    auto unchanged_since_failure = [&](q_vertex v) {
-      const std::size_t failed = stamp(failed_at, v);
-      if(failed == 0) return false;
-      for(q_face f : faces_around_target(halfedge(v, qmesh), qmesh))
-        if(f != QGT::null_face())
-          for(q_vertex w : vertices_around_face(halfedge(f, qmesh), qmesh))
-            if(stamp(moved_at, w) > failed) return false;
-      return true;
-    };
+    Untangling_memo memo;
     for(unsigned pass = 0; pass < max_passes && !bad.empty(); ++pass)
     {
       std::vector<q_vertex> candidates;
@@ -758,16 +774,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
       std::size_t moves = 0;
       for(q_vertex v : candidates)
-      {
-        if(unchanged_since_failure(v)) continue;
-        if(untangle_vertex(v))
-        {
-          ++moves;
-          moved_at[v] = ++clock;
-        }
-        else
-          failed_at[v] = ++clock;
-      }
+        if(untangle_vertex_again(v, memo)) ++moves;
       stats.untangling_moves += moves;
       if(moves == 0) return;
       bad.clear();
@@ -838,8 +845,9 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       for(std::size_t i = 0; i < movable.size(); ++i) put(qvpm, movable[i], new_positions[i]);
     }
     // the relaxation opens the fold; single moves then mend what it squeezed
+    Untangling_memo memo;
     for(int pass = 0; pass < 3; ++pass)
-      for(q_vertex v : movable) untangle_vertex(v);
+      for(q_vertex v : movable) untangle_vertex_again(v, memo);
     const Score after = region_score(quads);
     relaxed.clear();
     for(std::size_t i = 0; i < movable.size(); ++i)
