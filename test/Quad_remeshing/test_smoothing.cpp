@@ -103,6 +103,18 @@ struct Grid_on_square
   }
 };
 
+// An 8 x 8 quad grid on the flat unit square in which two inner vertices were pushed across their
+// neighbours, which folds several quads over.
+struct Folded_grid_on_square : Grid_on_square
+{
+  Folded_grid_on_square()
+    : Grid_on_square(8, [](int i, int j, double& x, double& y) {
+        if(i == 2 && j == 2) { x = 3.6 / 8; y = 3.5 / 8; }
+        if(i == 6 && j == 5) { x = 4.4 / 8; y = 5.3 / 8; }
+      })
+  {}
+};
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(smoothing)
@@ -224,13 +236,7 @@ BOOST_AUTO_TEST_CASE(perturbed_grid_on_a_plane_is_untangled_towards_squares)
 
 BOOST_AUTO_TEST_CASE(folded_grid_is_untangled_without_smoothing_iterations)
 {
-  // An 8 x 8 quad grid on the flat unit square in which two inner vertices were pushed across their
-  // neighbours, which folds several quads over.
-  const int n = 8;
-  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
-    if(i == 2 && j == 2) { x = 3.6 / n; y = 3.5 / n; }
-    if(i == 6 && j == 5) { x = 4.4 / n; y = 5.3 / n; }
-  });
+  Folded_grid_on_square g;
   Mesh& q = g.q;
   BOOST_TEST_REQUIRE(min_sj(q) <= 0.);
 
@@ -318,11 +324,7 @@ BOOST_AUTO_TEST_CASE(a_vertex_keeps_to_its_sheet_over_another_facing_the_same_wa
   // their edge length (0.125) off it, whose closest point is on the lower sheet: its normal and
   // component are those of the square's, so only the connection through the surface tells them apart
   // (truck's hood, 0.017 above a sheet of its own component that faces up too after the repair).
-  const int n = 8;
-  Grid_on_square g(n, [&](int i, int j, double& x, double& y) {
-    if(i == 2 && j == 2) { x = 3.6 / n; y = 3.5 / n; }
-    if(i == 6 && j == 5) { x = 4.4 / n; y = 5.3 / n; }
-  });
+  Folded_grid_on_square g;
   Mesh& t = g.t;
   const double gap = 0.04;
   auto corner = [&](double x, double y, double z) {

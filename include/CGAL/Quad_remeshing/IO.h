@@ -7,6 +7,7 @@
 #define CGAL_QUAD_REMESHING_IO_H
 
 #include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/internal/is_finite_point.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 
 #include <CGAL/Real_timer.h>
@@ -482,8 +483,7 @@ Repair_statistics read_and_repair(const std::string& fname,
   if(polygons.empty()) throw Bad_input("'" + fname + "': the mesh has no face");
 
   for(const Point& p : points)
-    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))
-       || !std::isfinite(CGAL::to_double(p.z())))
+    if(!internal::is_finite_point(p))
       throw Bad_input("'" + fname + "': a vertex has a non-finite coordinate (NaN or infinity)");
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {

@@ -7,6 +7,7 @@
 #define CGAL_QUAD_REMESHING_SMOOTH_QUAD_MESH_H
 
 #include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
+#include <CGAL/Quad_remeshing/internal/is_finite_point.h>
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
@@ -515,6 +516,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // on the vertex's own side if there is one).
   const t_face no_face = boost::graph_traits<TriangleMesh>::null_face();
   std::vector<t_face> sheet;
+  auto in_sheet = get(CGAL::dynamic_face_property_t<bool>(), tmesh); // (false outside a flood)
+  for(t_face f : faces(tmesh)) put(in_sheet, f, false);
   // the face under each vertex's position, remembered from the projection that put it there or from a
   // closest-point query, which spares one query per move
   auto last_point = get(CGAL::dynamic_vertex_property_t<Point_3>(), qmesh);
@@ -531,6 +534,26 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       remember(v, current, tree.closest_point_and_primitive(current).second);
     return get(last_face, v);
   };
+  // the closest point to `p` on `candidates` (only on those on the own side of `v` if `own_only`), its
+  // face and squared distance; false if there is no such face
+  auto closest_on_faces = [&](const std::vector<t_face>& candidates, q_vertex v, const Point_3& p, bool own_only,
+                              Point_3& best, t_face& best_face, double& best_d) {
+    bool found = false;
+    for(t_face f : candidates)
+    {
+      if(own_only && !on_own_side(f, v)) continue;
+      const Point_3 q = K().construct_projected_point_3_object()(triangle_of(f), p);
+      const double d = CGAL::to_double(CGAL::squared_distance(p, q));
+      if(!found || d < best_d)
+      {
+        found = true;
+        best = q;
+        best_face = f;
+        best_d = d;
+      }
+    }
+    return found;
+  };
   // `p` projected onto the sheet of `v` when its closest face `target` is not on it (else false)
   auto off_sheet_projection = [&](q_vertex v, const Point_3& p, t_face target, Point_3& projection) -> bool {
     const Point_3& current = get(qvpm, v);
@@ -544,33 +567,23 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     const double x = CGAL::to_double(current.x()), y = CGAL::to_double(current.y()), z = CGAL::to_double(current.z());
     const CGAL::Bbox_3 within_reach(x - reach, y - reach, z - reach, x + reach, y + reach, z + reach);
     sheet.assign(1, start);
-    for(std::size_t i = 0; i < sheet.size(); ++i)
+    put(in_sheet, start, true);
+    bool reached = false;
+    for(std::size_t i = 0; i < sheet.size() && !reached; ++i)
       for(auto th : halfedges_around_face(halfedge(sheet[i], tmesh), tmesh))
       {
         const t_face g = face(opposite(th, tmesh), tmesh);
-        if(g == no_face || !CGAL::do_overlap(triangle_of(g).bbox(), within_reach) ||
-           std::find(sheet.begin(), sheet.end(), g) != sheet.end())
-          continue;
-        if(g == target) return false;
+        if(g == no_face || get(in_sheet, g) || !CGAL::do_overlap(triangle_of(g).bbox(), within_reach)) continue;
+        if(g == target) { reached = true; break; }
+        put(in_sheet, g, true);
         sheet.push_back(g);
       }
-    bool found_own = false;
+    for(t_face f : sheet) put(in_sheet, f, false);
+    if(reached) return false;
     t_face best_face = no_face;
     double best_d = 0.;
-    for(t_face f : sheet)
-    {
-      const bool own = on_own_side(f, v);
-      if(found_own && !own) continue;
-      const Point_3 q = K().construct_projected_point_3_object()(triangle_of(f), p);
-      const double d = CGAL::to_double(CGAL::squared_distance(p, q));
-      if(best_face == no_face || (own && !found_own) || d < best_d)
-      {
-        projection = q;
-        best_face = f;
-        best_d = d;
-      }
-      found_own = found_own || own;
-    }
+    if(!closest_on_faces(sheet, v, p, true, projection, best_face, best_d))
+      closest_on_faces(sheet, v, p, false, projection, best_face, best_d);
     remember(v, projection, best_face);
     return true;
   };
@@ -604,23 +617,17 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     for(int k = 0; k < 4; ++k, r *= 4.) {
       near.clear();
       tree.all_intersected_primitives(CGAL::Bbox_3(x - r, y - r, z - r, x + r, y + r, z + r), std::back_inserter(near));
-      bool found = false;
-      Point_3 best = closest.first;
+      Point_3 best;
+      t_face best_face = no_face;
       double best_d = 0.;
-      for(t_face f : near) {
-        if(!on_own_side(f, v)) continue;
-        const Point_3 q = K().construct_projected_point_3_object()(triangle_of(f), p);
-        const double d = CGAL::to_double(CGAL::squared_distance(p, q));
-        if(!found || d < best_d) { found = true; best = q; best_d = d; }
-      }
-      if(found && best_d <= r * r) return best; // nothing outside the box can be closer
+      // (nothing outside the box can be closer)
+      if(closest_on_faces(near, v, p, true, best, best_face, best_d) && best_d <= r * r) return best;
     }
     return closest.first;
   };
   auto place = [&](q_vertex v, const Point_3& p) {
     // (a target from a collapsed quad can be NaN: the vertex stays where it is)
-    if(!(std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-         std::isfinite(CGAL::to_double(p.z()))))
+    if(!internal::is_finite_point(p))
       return get(qvpm, v);
     return get(kind, v) == 1 ? lines.project(get(line_of, v), p) : project_on_own_side(v, p);
   };
