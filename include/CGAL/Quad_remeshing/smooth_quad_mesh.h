@@ -100,6 +100,7 @@ struct Feature_lines
   typedef typename K::Segment_3 Segment_3;
   std::vector<std::vector<Segment_3>> lines;
   std::vector<Point_3> corners;
+  std::vector<CGAL::Bbox_3> boxes; // of each line
 
   Feature_lines(const TriangleMesh& tm, EdgeFeatureMap efm, VPM vpm, double corner_angle_deg)
   {
@@ -171,6 +172,30 @@ struct Feature_lines
       }
       lines.push_back(std::move(line));
     }
+    // the boxes of the lines, a billionth of the mesh's size wider than the lines: the distance to a box
+    // is then smaller than any rounding of the distance to its line
+    CGAL::Bbox_3 all;
+    for(vertex_descriptor v : vertices(tm)) all += get(vpm, v).bbox();
+    const double margin = 1e-9 * internal::bbox_diagonal(all);
+    for(const std::vector<Segment_3>& line : lines)
+    {
+      CGAL::Bbox_3 box;
+      for(const Segment_3& s : line) box += s.bbox();
+      boxes.emplace_back(box.xmin() - margin, box.ymin() - margin, box.zmin() - margin, box.xmax() + margin,
+                         box.ymax() + margin, box.zmax() + margin);
+    }
+  }
+
+  static double squared_distance_to_box(const Point_3& p, const CGAL::Bbox_3& b)
+  {
+    double d = 0.;
+    for(int i = 0; i < 3; ++i)
+    {
+      const double x = CGAL::to_double(p[i]);
+      const double out = (std::max)((std::max)(b.min(i) - x, x - b.max(i)), 0.);
+      d += out * out;
+    }
+    return d;
   }
 
   // the closest point of line `l` to `p`
@@ -199,6 +224,8 @@ struct Feature_lines
     sq_dist = std::numeric_limits<double>::max();
     for(std::size_t l = 0; l < lines.size(); ++l)
     {
+      // (a line whose box is as far as the best line cannot be nearer)
+      if(!(squared_distance_to_box(p, boxes[l]) < sq_dist)) continue;
       double d;
       project(l, p, &d);
       if(d < sq_dist) { sq_dist = d; best_l = l; }
