@@ -21,6 +21,7 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -205,6 +206,7 @@ public:
       for(std::size_t u = 0; u < n; ++u) pred_[u] = u;
       color_.assign(n, boost::white_color);
       is_end_.assign(n, 0);
+      s.heap_index.assign(n, 0);
     }
     for(std::size_t e : ends) is_end_[e] = 1;
     if(loop) is_end_[start] = 1;
@@ -217,11 +219,26 @@ public:
     std::optional<std::size_t> reached;
     const auto index = boost::get(boost::vertex_index, g_);
     try {
-      boost::dijkstra_shortest_paths_no_init(g_, source, boost::make_iterator_property_map(pred_.begin(), index),
-                                             boost::make_iterator_property_map(dist_.begin(), index),
-                                             boost::get(&Arc::weight, g_), index, std::less<double>(),
-                                             boost::closed_plus<double>(infinity), 0., vis,
-                                             boost::make_iterator_property_map(color_.begin(), index));
+      // boost::dijkstra_shortest_paths_no_init(), whose body this is, allocates and fills a heap-index array
+      // of all 4|V| nodes for every search (a third of the layout's time on truck): the slot keeps one. Its
+      // entries need no reset, the heap sets a node's entry when it pushes the node.
+      typedef typename boost::graph_traits<Graph>::vertex_descriptor Graph_node;
+      const auto pred_map = boost::make_iterator_property_map(pred_.begin(), index);
+      const auto dist_map = boost::make_iterator_property_map(dist_.begin(), index);
+      const auto heap_index_map = boost::make_iterator_property_map(s.heap_index.begin(), index);
+      const auto weight_map = boost::get(&Arc::weight, g_);
+      typedef boost::d_ary_heap_indirect<Graph_node, 4, std::remove_const_t<decltype(heap_index_map)>,
+                                         std::remove_const_t<decltype(dist_map)>, std::less<double>> Queue;
+      Queue queue(dist_map, heap_index_map, std::less<double>());
+      boost::detail::dijkstra_bfs_visitor<Stop_at_end_visitor<std::vector<char>>, Queue,
+                                          std::remove_const_t<decltype(weight_map)>,
+                                          std::remove_const_t<decltype(pred_map)>,
+                                          std::remove_const_t<decltype(dist_map)>, boost::closed_plus<double>,
+                                          std::less<double>>
+        bfs_vis(vis, queue, weight_map, pred_map, dist_map, boost::closed_plus<double>(infinity), std::less<double>(), 0.);
+      const Graph_node from = source;
+      boost::breadth_first_visit(g_, &from, &from + 1, queue, bfs_vis,
+                                 boost::make_iterator_property_map(color_.begin(), index));
     } catch(const Dijkstra_end_reached& r) {
       reached = r.node;
     } catch(...) {
@@ -281,6 +298,7 @@ private:
     std::vector<boost::default_color_type> color;
     std::vector<char> is_end;
     std::vector<std::size_t> touched;
+    std::vector<std::size_t> heap_index; // position of each node in the search's heap (see shortest_path())
   };
 
   std::vector<Hop> hops_of(std::size_t u) const
