@@ -22,6 +22,7 @@
 #include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>
 #include <CGAL/Quad_remeshing/smooth_quad_mesh.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
+#include <CGAL/Quad_remeshing/refine_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_count.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
@@ -38,6 +39,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -75,6 +77,7 @@ const char* usage_text =
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
   "                   [--html FILE.html] [--adaptive-remeshing] [--no-hold-sharp-edges]\n"
+  "                   [--refine-layout]\n"
   "                   [--verbose | --quiet] [--help]\n"
   "\n"
   "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
@@ -125,6 +128,8 @@ const char* usage_text =
   "                       and the summary say what they gave up); the output then depends on the\n"
   "                       machine's speed and load\n"
   "  --adaptive-remeshing run the adaptive remeshing pass (experimental)\n"
+  "  --refine-layout      refine the triangles where a layout patch stays non-convex for want of a\n"
+  "                       vertex, and cut those patches again (experimental)\n"
   "  --no-hold-sharp-edges let the uniform remeshing pass smooth away the sharp edges that are not\n"
   "                       features and the long creases (held in place by default)\n"
   "  --verbose            print progress of every stage\n"
@@ -149,7 +154,7 @@ struct Options
          component_resolution = QR::internal::default_component_resolution;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
-  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true;
+  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true, refine_layout = false;
 
   // the sizing tolerance in use: as given, else 0 with --faces (a count of quads asks for the uniform
   // size that gives it), else the library's default
@@ -226,6 +231,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--fidelity-tolerance") o.fidelity_tolerance = parse_number(a, value(), 0.);
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
+    else if(a == "--refine-layout") o.refine_layout = true;
     else if(a == "--no-hold-sharp-edges") o.hold_sharp_edges = false;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option '" + a + "'");
@@ -469,12 +475,17 @@ private:
   QR::Report stage_layout()
   {
     state_.layout = std::make_unique<Layout>(state_.tmesh, state_.field, state_.singularity);
-    const auto st = QR::trace_patch_layout(state_.tmesh, state_.feature, *state_.layout,
-                                           QR::parameters::combine(
-                                             CGAL::parameters::verbose(opt_.verbose).maximum_running_time(
-                                               budget_.stage_limit(QR::internal::layout_time_share)),
-                                             QR::parameters::number_of_threads(opt_.threads)));
+    const auto np = QR::parameters::combine(CGAL::parameters::verbose(opt_.verbose).maximum_running_time(
+                                              budget_.stage_limit(QR::internal::layout_time_share)),
+                                            QR::parameters::number_of_threads(opt_.threads));
+    auto st = QR::trace_patch_layout(state_.tmesh, state_.feature, *state_.layout, np);
+    // on request, where patches stay non-convex for want of a vertex, the mesh is refined and the layout repaired
+    std::optional<QR::Refine_patch_layout_statistics> rs;
+    if(opt_.refine_layout)
+      rs = QR::refine_patch_layout(state_.tmesh, state_.feature, state_.field, state_.singularity, state_.layout, st, np);
     budget_.record("layout", st.report());
+    QR::Report r = st.report();
+    if(rs) r["refinement"] = rs->report();
     if(!opt_.dump_dir.empty())
     {
       std::ofstream f(opt_.dump_dir + "/5_layout.ply");
@@ -483,7 +494,7 @@ private:
       state_.layout->write_polylines(g);
     }
     if(!opt_.html_file.empty()) extra_layers_.push_back(QR::patch_layout_layer("patch layout", *state_.layout));
-    return st.report();
+    return r;
   }
 
   // The quantize stage's solve. Under --time-limit every solve gets the quantize share of the time then

@@ -26,6 +26,12 @@ qr_cli_test(help 0 ARGS --help OUTPUT_MATCHES "usage: quad_remesh")
 # (fandisk: 916 quads; 1810 when the length came from the area alone)
 qr_cli_test(faces_count_fandisk 0 ARGS ${QR_MESHES}/fandisk.off -o ${QR_CLI_OUT}/fandisk_1000.obj --faces 1000 --threads 1
             OUTPUT_MATCHES "output: [0-9]+ vertices, (8[5-9][0-9]|9[0-9][0-9]|10[0-9][0-9]|11[0-4][0-9]) faces")
+# --refine-layout: bunny's one non-convex patch (a left turn beside a held crease's tip) gets the vertex its
+# cut needs, and the layout is all valid; the refinement is in the layout stage's record
+qr_cli_test(refine_layout_bunny 0 ARGS ${QR_MESHES}/bunny.off -o ${QR_CLI_OUT}/bunny_refined_layout.obj --until layout --refine-layout --quiet
+            --report ${QR_CLI_OUT}/bunny_refined_layout.json
+            FILE ${QR_CLI_OUT}/bunny_refined_layout.json
+            FILE_MATCHES "\"refinement\": {[^}]*\"invalid_before\": 1,[^}]*\"split_edges\": [1-9][0-9]*,[^}]*\"invalid_after\": 0")
 qr_cli_test(no_input 2 ARGS OUTPUT_MATCHES "no input file")
 qr_cli_test(unknown_option 2 ARGS ${QR_MESHES}/fandisk.off --bogus OUTPUT_MATCHES "unknown option")
 qr_cli_test(bad_stage 2 ARGS ${QR_MESHES}/fandisk.off --until nowhere OUTPUT_MATCHES "unknown stage")

@@ -3,6 +3,10 @@
 
 #include <CGAL/Quad_remeshing/Patch_layout.h>
 #include <CGAL/Quad_remeshing/cross_field.h>
+#include <CGAL/Quad_remeshing/detect_feature_edges.h>
+#include <CGAL/Quad_remeshing/IO.h>
+#include <CGAL/Quad_remeshing/refine_patch_layout.h>
+#include <CGAL/Quad_remeshing/remesh_for_quadrangulation.h>
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
@@ -19,6 +23,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -784,6 +789,72 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   BOOST_TEST(sc.layout.paths < s.layout.paths);
   for(std::size_t p = 0; p < cut.number_of_patches(); ++p) BOOST_TEST(cut.validity(p) != Layout::NOT_A_DISK);
   for(E e : m.edges()) if(feature[e]) BOOST_TEST(cut.is_cut(e));
+}
+
+// bunny through the stages as quad_remesh() runs them: a held crease ends in a sharp tip, and the patch
+// beside it keeps a left turn where the crease bends back, because no vertex of the remeshed triangles
+// lies where a cut from there would meet the other side of the thin wedge at a right angle.
+// refine_patch_layout() makes that vertex (and puts the one between on the cut's line); the repair then
+// cuts the patch, and every patch is valid.
+BOOST_AUTO_TEST_CASE(refinement_gives_the_tip_cut_its_vertex)
+{
+  namespace QR = CGAL::Quad_remeshing;
+  Mesh m;
+  QR::read_and_repair(qr_test::data_file("bunny.off"), m);
+  auto feature = m.add_property_map<E, bool>("e:feature", false).first;
+  auto corner = m.add_property_map<V, bool>("v:corner", false).first;
+  QR::detect_feature_edges(m, feature, QR::parameters::vertex_is_feature_corner_map(corner));
+  QR::remesh_for_quadrangulation(m, feature, QR::parameters::combine(QR::parameters::quad_edge_length(QR::default_quad_edge_length(m)),
+                                                                     QR::parameters::vertex_is_feature_corner_map(corner)));
+  m.collect_garbage();
+  auto field = m.add_property_map<F, Vector_3>("f:cross_field", Vector_3(0, 0, 0)).first;
+  auto singularity = m.add_property_map<V, int>("v:singularity", 0).first;
+  QR::compute_cross_field(m, feature, field);
+  QR::compute_cross_field_singularities(m, feature, field, singularity);
+  auto layout = std::make_unique<Layout>(m, field, singularity);
+  auto st = QR::trace_patch_layout(m, feature, *layout);
+  const std::size_t rounds = st.rounds.size(), invalid = st.layout.patches - st.layout.valid_patches;
+  BOOST_TEST_REQUIRE(invalid >= 1u);
+  std::size_t features_before = 0, paths_before = 0;
+  for(E e : m.edges()) features_before += feature[e];
+  for(std::size_t id : layout->path_ids()) paths_before += !layout->path(id).is_feature;
+  const std::size_t vertices_before = m.number_of_vertices(), faces_before = m.number_of_faces();
+
+  const QR::Refine_patch_layout_statistics rs = QR::refine_patch_layout(m, feature, field, singularity, layout, st);
+  BOOST_TEST_MESSAGE("  bunny: " << rs.split_edges << " edges split, invalid patches " << rs.invalid_before << " -> "
+                     << rs.invalid_after);
+  BOOST_TEST(rs.invalid_before == invalid);
+  BOOST_TEST_REQUIRE(rs.split_edges >= 1u);
+  BOOST_TEST(rs.invalid_after < rs.invalid_before);
+  BOOST_TEST(rs.invalid_after == st.layout.patches - st.layout.valid_patches);
+  BOOST_TEST(st.layout.valid_patches == st.layout.patches);
+  // the repair's rounds follow the trace's
+  BOOST_TEST_REQUIRE(st.rounds.size() == rounds + 3u);
+  BOOST_TEST(st.rounds.back().name == "refined_corners");
+  // each split adds a vertex and, inside a closed mesh, two faces; a split feature edge is two of them
+  BOOST_TEST(m.is_valid(false));
+  BOOST_TEST(CGAL::is_triangle_mesh(m));
+  BOOST_TEST(m.number_of_vertices() == vertices_before + rs.split_edges);
+  BOOST_TEST(m.number_of_faces() == faces_before + 2u * rs.split_edges);
+  std::size_t features_after = 0;
+  for(E e : m.edges()) {
+    features_after += feature[e];
+    if(feature[e]) BOOST_TEST(layout->is_cut(e));
+  }
+  BOOST_TEST(features_after >= features_before);
+  BOOST_TEST(features_after <= features_before + rs.split_edges);
+  // the traced paths are all there, and the repair's cuts with them
+  std::size_t paths_after = 0;
+  for(std::size_t id : layout->path_ids()) paths_after += !layout->path(id).is_feature;
+  BOOST_TEST(paths_after > paths_before);
+  for(std::size_t p = 0; p < layout->number_of_patches(); ++p) BOOST_TEST(layout->validity(p) == Layout::SATISFIED);
+
+  // a layout whose patches are all valid is left alone
+  const Layout* same = layout.get();
+  const QR::Refine_patch_layout_statistics again = QR::refine_patch_layout(m, feature, field, singularity, layout, st);
+  BOOST_TEST(again.split_edges == 0u);
+  BOOST_TEST(layout.get() == same);
+  BOOST_TEST(m.number_of_vertices() == vertices_before + rs.split_edges);
 }
 
 BOOST_AUTO_TEST_CASE(quad_sizing_follows_curvature)

@@ -391,6 +391,16 @@ public:
     dirty_ = graph_dirty_ = true;
   }
 
+  /// the halfedges given to `add_corner()`, in the order of their indices
+  std::vector<halfedge_descriptor> added_corners() const
+  {
+    std::vector<halfedge_descriptor> r;
+    if(added_corner_.empty()) return r;
+    for(halfedge_descriptor h : halfedges(tm_))
+      if(added_corner_[hindex_[h]]) r.push_back(h);
+    return r;
+  }
+
   /// The patches that replace some patches of the layout when paths are added or removed (see
   /// `preview_add_path()`): `old_patches` are the ids of the patches that change, `new_patches` what they
   /// become. Only those patches are rebuilt, so trying a candidate path costs time in the size of the

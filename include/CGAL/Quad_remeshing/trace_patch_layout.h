@@ -903,6 +903,94 @@ private:
   unsigned threads_ = 1;
 };
 
+// A runner of the rounds of `trace_patch_layout()` and `repair_patch_layout()`: a round that may stop at
+// the time limit is skipped once it is reached, and the first one it stops is named.
+template <typename Layout>
+auto round_runner(Layout& layout, Layout_tracer<Layout>& tracer, Trace_patch_layout_statistics& stats, bool verbose)
+{
+  return [&layout, &tracer, &stats, verbose](const std::string& name, auto&& body, bool may_stop = true) {
+    if(may_stop && !stats.stopped_in_round.empty()) return;
+    CGAL::Real_timer t;
+    t.start();
+    Trace_patch_layout_statistics::Round r;
+    r.name = name;
+    body(r);
+    r.seconds = t.time();
+    if(may_stop && tracer.out_of_time()) stats.stopped_in_round = name;
+    if(verbose)
+      std::cerr << "[layout] " << name << ": " << r.candidates << " candidates, " << r.paths << " paths, "
+                << layout.statistics().valid_patches << "/" << layout.number_of_patches() << " valid patches, "
+                << r.seconds << " s\n";
+    stats.rounds.push_back(r);
+  };
+}
+
+// The rounds after the clean-up: `last_resort_cuts`, `path_part_removal` and `corners` (see
+// `trace_patch_layout()`).
+template <typename TriangleMesh, typename Layout, typename Run>
+void run_final_layout_rounds(const TriangleMesh& tmesh, Layout& layout, Layout_tracer<Layout>& tracer,
+                             unsigned iterations, Trace_patch_layout_statistics& stats, Run& run)
+{
+  typedef Trace_patch_layout_statistics::Round Round;
+  // after the clean-up, which then leaves the same paths as without them: disks that are not convex or have
+  // a bad number of corners are cut. A cut changes its own patch only (the second part is appended to the
+  // patches), so one pass over the growing list tries every patch until no cut helps it; every cut lowers
+  // the badness, so the pass ends.
+  run("last_resort_cuts", [&](Round& r) {
+    const std::size_t cuts_before = tracer.cuts_made;
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+      while(tracer.last_resort_cut(p) > 0) {}
+    r.paths = tracer.cuts_made - cuts_before;
+  }, false);
+  // then invalid patches are merged into a neighbour across a part of a path, and the merged patches cut
+  // again; every step lowers the number of invalid patches or keeps it, so a few passes end it
+  // (the round's `candidates` are the path parts removed, its `paths` the cuts kept)
+  run("path_part_removal", [&](Round& r) {
+    const std::size_t cuts_before = tracer.cuts_made;
+    for(unsigned pass = 0; pass < iterations; ++pass) {
+      const std::size_t before = tracer.invalid_patches();
+      std::size_t removed = 0;
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p) removed += tracer.merge_across_path_part(p, true);
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+        while(tracer.last_resort_cut(p) > 0) {}
+      r.candidates += removed;
+      if(removed == 0 || tracer.invalid_patches() >= before) break;
+    }
+    r.paths = tracer.cuts_made - cuts_before;
+  }, false);
+  // Last, a convex disk with fewer than 3 corners, which no path or cut could split (typically a loop of
+  // feature lines meeting at two tips, a few triangles wide), gets corners in the middle of its longest
+  // sides, where the quadrangulation would put them (internal::middle_of_longest_side()): it is then a
+  // valid triangle. The patch on the other side of such a corner sees a point of its side.
+  run("corners", [&](Round& r) {
+    typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+    std::vector<halfedge_descriptor> corners;
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p) {
+      const auto& P = layout.patch(p);
+      if(layout.validity(P) != Layout::BAD_VALENCE || P.corners.size() >= 3) continue;
+      ++r.candidates;
+      const auto& L = P.loops[0];
+      const std::size_t m = L.size();
+      std::vector<double> cum(m + 1, 0.);
+      std::vector<std::size_t> positions;
+      for(std::size_t i = 0; i < m; ++i) {
+        cum[i + 1] = cum[i] + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout.point(source(L[i], tmesh)),
+                                                                                 layout.point(target(L[i], tmesh)))));
+        if(P.turns[0][i] != Layout::STRAIGHT) positions.push_back(i);
+      }
+      while(positions.size() < 3) {
+        const std::size_t i = internal::middle_of_longest_side(cum, positions);
+        if(i == m) break;
+        positions.insert(std::upper_bound(positions.begin(), positions.end(), i), i);
+        corners.push_back(L[i]);
+      }
+    }
+    // added once the patches are all looked at: adding rebuilds the patches, whose ids may then change
+    for(halfedge_descriptor h : corners) layout.add_corner(h);
+    stats.added_corners = corners.size();
+  }, false);
+}
+
 } // namespace internal
 
 /*!
@@ -1028,22 +1116,7 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   tracer.set_threads(threads);
 
   typedef Trace_patch_layout_statistics::Round Round;
-  // a round that may stop at the time limit: skipped once it is reached, and the first one it stops is named
-  auto run = [&](const std::string& name, auto&& body, bool may_stop = true) {
-    if(may_stop && !stats.stopped_in_round.empty()) return;
-    CGAL::Real_timer t;
-    t.start();
-    Round r;
-    r.name = name;
-    body(r);
-    r.seconds = t.time();
-    if(may_stop && tracer.out_of_time()) stats.stopped_in_round = name;
-    if(verbose)
-      std::cerr << "[layout] " << name << ": " << r.candidates << " candidates, " << r.paths << " paths, "
-                << layout.statistics().valid_patches << "/" << layout.number_of_patches() << " valid patches, "
-                << r.seconds << " s\n";
-    stats.rounds.push_back(r);
-  };
+  auto run = internal::round_runner(layout, tracer, stats, verbose);
 
   run("features", [&](Round& r) { r.paths = layout.add_feature_paths(edge_is_feature_map); }, false);
   // convexity enforcement: from left turns and U-turns, first to the opposite nodes of other bad vertices,
@@ -1113,63 +1186,7 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
     }
   }, false);
   stats.removed_paths = tracer.clean_up();
-  // after the clean-up, which then leaves the same paths as without them: disks that are not convex or have
-  // a bad number of corners are cut. A cut changes its own patch only (the second part is appended to the
-  // patches), so one pass over the growing list tries every patch until no cut helps it; every cut lowers
-  // the badness, so the pass ends.
-  run("last_resort_cuts", [&](Round& r) {
-    const std::size_t cuts_before = tracer.cuts_made;
-    for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
-      while(tracer.last_resort_cut(p) > 0) {}
-    r.paths = tracer.cuts_made - cuts_before;
-  }, false);
-  // then invalid patches are merged into a neighbour across a part of a path, and the merged patches cut
-  // again; every step lowers the number of invalid patches or keeps it, so a few passes end it
-  // (the round's `candidates` are the path parts removed, its `paths` the cuts kept)
-  run("path_part_removal", [&](Round& r) {
-    const std::size_t cuts_before = tracer.cuts_made;
-    for(unsigned pass = 0; pass < iterations; ++pass) {
-      const std::size_t before = tracer.invalid_patches();
-      std::size_t removed = 0;
-      for(std::size_t p = 0; p < layout.number_of_patches(); ++p) removed += tracer.merge_across_path_part(p, true);
-      for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
-        while(tracer.last_resort_cut(p) > 0) {}
-      r.candidates += removed;
-      if(removed == 0 || tracer.invalid_patches() >= before) break;
-    }
-    r.paths = tracer.cuts_made - cuts_before;
-  }, false);
-  // Last, a convex disk with fewer than 3 corners, which no path or cut could split (typically a loop of
-  // feature lines meeting at two tips, a few triangles wide), gets corners in the middle of its longest
-  // sides, where the quadrangulation would put them (internal::middle_of_longest_side()): it is then a
-  // valid triangle. The patch on the other side of such a corner sees a point of its side.
-  run("corners", [&](Round& r) {
-    typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-    std::vector<halfedge_descriptor> corners;
-    for(std::size_t p = 0; p < layout.number_of_patches(); ++p) {
-      const auto& P = layout.patch(p);
-      if(layout.validity(P) != Layout::BAD_VALENCE || P.corners.size() >= 3) continue;
-      ++r.candidates;
-      const auto& L = P.loops[0];
-      const std::size_t m = L.size();
-      std::vector<double> cum(m + 1, 0.);
-      std::vector<std::size_t> positions;
-      for(std::size_t i = 0; i < m; ++i) {
-        cum[i + 1] = cum[i] + std::sqrt(CGAL::to_double(CGAL::squared_distance(layout.point(source(L[i], tmesh)),
-                                                                                 layout.point(target(L[i], tmesh)))));
-        if(P.turns[0][i] != Layout::STRAIGHT) positions.push_back(i);
-      }
-      while(positions.size() < 3) {
-        const std::size_t i = internal::middle_of_longest_side(cum, positions);
-        if(i == m) break;
-        positions.insert(std::upper_bound(positions.begin(), positions.end(), i), i);
-        corners.push_back(L[i]);
-      }
-    }
-    // added once the patches are all looked at: adding rebuilds the patches, whose ids may then change
-    for(halfedge_descriptor h : corners) layout.add_corner(h);
-    stats.added_corners = corners.size();
-  }, false);
+  internal::run_final_layout_rounds(tmesh, layout, tracer, iterations, stats, run);
   stats.layout = layout.statistics();
   stats.seconds = total.time();
   if(verbose)
@@ -1183,6 +1200,48 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
     for(auto& f : failing) std::cerr << " " << f.first << ":" << f.second;
     std::cerr << "\n";
   }
+  return stats;
+}
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+  Runs the rounds of `trace_patch_layout()` that come after its clean-up, `last_resort_cuts`,
+  `path_part_removal` and `corners`, on a layout that already has its paths: typically a layout traced by
+  `trace_patch_layout()` whose paths were copied onto a refined mesh (see `refine_patch_layout_tips()`),
+  so that the patches the refinement touched get their cuts. A patch that was valid stays valid: every cut
+  and every removal lowers the number of invalid patches or keeps it.
+
+  \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
+  \tparam GeomTraits the traits of the layout
+  \tparam NamedParameters a sequence of named parameters
+
+  \param tmesh the mesh the layout was built on
+  \param layout a layout built on `tmesh`, with its paths
+  \param np optional named parameters: `number_of_iterations` (default `8`), `number_of_threads` (default
+            `1`) and `verbose` (default `false`), as for `trace_patch_layout()`
+
+  \pre `&layout.mesh() == &tmesh`
+*/
+template <typename TriangleMesh, typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
+Trace_patch_layout_statistics repair_patch_layout(const TriangleMesh& tmesh, Patch_layout<TriangleMesh, GeomTraits>& layout,
+                                                  const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef Patch_layout<TriangleMesh, GeomTraits> Layout;
+  if(&layout.mesh() != &tmesh) throw std::invalid_argument("repair_patch_layout: the layout is not built on this mesh");
+  const unsigned iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 8u);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
+  Trace_patch_layout_statistics stats;
+  CGAL::Real_timer total;
+  total.start();
+  internal::Layout_tracer<Layout> tracer(layout);
+  tracer.set_threads(threads);
+  auto run = internal::round_runner(layout, tracer, stats, verbose);
+  internal::run_final_layout_rounds(tmesh, layout, tracer, iterations, stats, run);
+  stats.layout = layout.statistics();
+  stats.seconds = total.time();
   return stats;
 }
 
