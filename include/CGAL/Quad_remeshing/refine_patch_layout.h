@@ -42,7 +42,8 @@ namespace Quad_remeshing {
 struct Refine_patch_layout_statistics
 {
   std::size_t invalid_before = 0; ///< invalid patches of the layout given
-  std::size_t split_edges = 0;    ///< edges of the triangle mesh split
+  std::size_t split_edges = 0;    ///< edges of the triangle mesh split, in all passes
+  std::size_t passes = 0;         ///< passes that split edges
   std::size_t invalid_after = 0;  ///< invalid patches after `repair_patch_layout()` (`invalid_before` if no edge was split)
   double seconds = 0.;            ///< time of the refinement and the repair
 
@@ -52,6 +53,7 @@ struct Refine_patch_layout_statistics
     Report r = Report::object();
     r["invalid_before"] = invalid_before;
     r["split_edges"] = split_edges;
+    r["passes"] = passes;
     r["invalid_after"] = invalid_after;
     r["seconds"] = seconds;
     return r;
@@ -59,6 +61,9 @@ struct Refine_patch_layout_statistics
 };
 
 namespace internal {
+
+// at most this many passes of refine_patch_layout()
+constexpr unsigned max_layout_refinement_passes = 4;
 
 // The point where a cut from the concave boundary vertex `target(L[i])` of a patch whose first loop is `L`
 // would meet another boundary edge of `L` at a right angle, if it lies inside that edge (away from its ends
@@ -194,17 +199,21 @@ bool move_keeps_orientation(const TriangleMesh& tm, const Layout& layout, typena
   not `v`, it must be a neighbour of `v` inside the patch (no path through it): it moves onto the segment
   from `v` to the landing point (its nearest point there, between 20% and 80% of the way), unless that
   turns one of its faces over (a normal reversed), in which case that left turn is left alone. A vertex
-  takes part in one landing at most. The cut `v`, `z`, landing point is then straight; the repair finds
-  it among its candidates. New faces take the field of the face they come from, a split feature edge
+  takes part in one landing at most in a pass. The cut `v`, `z`, landing point is then straight; the
+  repair finds it among its candidates. The passes (landings, splits, a new layout, the repair) go on
+  while they lower the number of invalid patches, at most 4: a cut can leave a patch whose left turn has
+  a landing point only then. New faces take the field of the face they come from, a split feature edge
   gives two feature edges, and the other elements of the mesh keep their descriptors (new ones are
   appended, as `CGAL::Surface_mesh` does when it has no removed elements). The moved vertices stay within
   the thin wedges, so the surface barely changes.
 
   Every patch that was valid stays valid, and the number of invalid patches does not grow (the repair's
   rule). On the 22 development meshes (`quad_remesh()` with `layout_refinement`), 54 invalid patches of 8677
-  become 34: truck 34 -> 21, elephant 7 -> 3, rocker_arm 7 -> 6, camelhead 3 -> 2, bunny 1 -> 0 (fertility
-  and spot keep their one: no landing point qualifies). The refinement takes a few hundredths of a
-  second, the repair about as long as the last rounds of the trace.
+  become 26: truck 34 -> 13 (in two passes), elephant 7 -> 3, rocker_arm 7 -> 6, camelhead 3 -> 2, bunny
+  1 -> 0; fertility and spot keep their one (no landing point qualifies). Of the 26 left, 9 turn back by U-turns only
+  (which the refinement does not look at), and 15 of the 17 others have no landing point. A pass
+  takes a few hundredths of a second for the landings and the splits, and then as long as the rounds of
+  `repair_patch_layout()`.
 
   \tparam TriangleMesh a model of `MutableFaceGraph` with triangle faces, whose descriptors stay valid when
           elements are added (`CGAL::Surface_mesh` without removed elements)
@@ -241,7 +250,6 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
   const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
   if(!layout || &layout->mesh() != &tmesh)
     throw std::invalid_argument("refine_patch_layout: the layout is not built on this mesh");
-  const auto& traced = *layout;
   Refine_patch_layout_statistics stats;
   typedef Patch_layout<TriangleMesh, GeomTraits> Layout;
   typedef typename Layout::halfedge_descriptor halfedge_descriptor;
@@ -251,119 +259,126 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
   CGAL::Real_timer timer;
   timer.start();
 
-  // the landing points, one per edge
-  std::vector<std::pair<halfedge_descriptor, Point_3>> splits;
-  std::vector<vertex_descriptor> touched; // one landing per vertex: the moves and splits do not interact
-  std::vector<std::pair<vertex_descriptor, Point_3>> moves;
-  stats.invalid_before = 0;
-  for(std::size_t p = 0; p < traced.number_of_patches(); ++p) {
-    const auto condition = traced.validity(p);
-    if(condition == Layout::SATISFIED) continue;
-    ++stats.invalid_before;
-    if(condition != Layout::NOT_CONVEX) continue;
-    const auto& P = traced.patch(p);
-    const auto& L = P.loops[0];
-    for(std::size_t i = 0; i < L.size(); ++i) {
-      if(P.turns[0][i] != Layout::LEFT_TURN) continue;
-      const auto landing = internal::cut_landing(tmesh, traced, L, i);
-      if(!landing.found) continue;
-      // the cut goes from v to the landing point through the patch-side face of the edge: straight through
-      // its third vertex z, moved onto the segment, if z is not v (z must then be a neighbour of v inside
-      // the patch, and the move must not turn any of its faces over)
-      const vertex_descriptor v = target(L[i], tmesh), z = target(next(landing.edge_halfedge, tmesh), tmesh);
-      const vertex_descriptor x = source(landing.edge_halfedge, tmesh), y = target(landing.edge_halfedge, tmesh);
-      if(std::find(touched.begin(), touched.end(), v) != touched.end() ||
-         std::find(touched.begin(), touched.end(), z) != touched.end() ||
-         std::find(touched.begin(), touched.end(), x) != touched.end() ||
-         std::find(touched.begin(), touched.end(), y) != touched.end())
-        continue;
-      if(z != v) {
-        if(!edge(v, z, tmesh).second) continue;
-        bool inside = true;
-        for(halfedge_descriptor g : halfedges_around_target(z, tmesh)) inside = inside && !traced.is_cut(edge(g, tmesh));
-        if(!inside) continue;
-        const auto pv = traced.point(v);
-        const auto vf = landing.point - pv;
-        const double t = (std::max)(0.2, (std::min)(0.8, CGAL::to_double((traced.point(z) - pv) * vf) / CGAL::to_double(vf * vf)));
-        const Point_3 moved = pv + t * vf;
-        if(!internal::move_keeps_orientation(tmesh, traced, z, moved, landing.edge_halfedge, landing.point)) continue;
-        moves.emplace_back(z, moved);
-      }
-      touched.insert(touched.end(), {v, x, y, z});
-      splits.emplace_back(landing.edge_halfedge, landing.point);
-    }
-  }
-  stats.split_edges = splits.size();
-  stats.invalid_after = stats.invalid_before;
-  if(splits.empty()) { stats.seconds = timer.time(); return stats; }
-
-  // the paths and corners of the layout, read before the mesh changes
-  std::vector<typename Layout::Path> paths;
-  for(std::size_t id : traced.path_ids())
-    if(!traced.path(id).is_feature) paths.push_back(traced.path(id));
-  const std::vector<halfedge_descriptor> corners = traced.added_corners();
-
-  // the splits; the new vertex of each split edge, by its two ends
-  auto vpm = get(CGAL::vertex_point, tmesh);
-  std::map<std::pair<vertex_descriptor, vertex_descriptor>, vertex_descriptor> inserted;
-  for(const auto& s : splits) {
-    const halfedge_descriptor h = s.first;
-    const vertex_descriptor a = source(h, tmesh), b = target(h, tmesh);
-    const bool was_feature = get(edge_is_feature_map, edge(h, tmesh));
-    const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tmesh); // a -> m, then h: m -> b
-    const vertex_descriptor m = target(hnew, tmesh);
-    put(vpm, m, s.second);
-    put(edge_is_feature_map, edge(hnew, tmesh), was_feature);
-    put(edge_is_feature_map, edge(h, tmesh), was_feature);
-    inserted[std::make_pair((std::min)(a, b), (std::max)(a, b))] = m;
-    // each face beside the edge is cut from m to its opposite vertex; both parts keep its field
-    for(const halfedge_descriptor side : {h, opposite(h, tmesh)}) {
-      if(is_border(side, tmesh)) continue;
-      const face_descriptor f = face(side, tmesh);
-      const auto direction = get(field, f);
-      const halfedge_descriptor cut = side == h ? CGAL::Euler::split_face(hnew, next(h, tmesh), tmesh)
-                                                : CGAL::Euler::split_face(side, next(next(side, tmesh), tmesh), tmesh);
-      put(edge_is_feature_map, edge(cut, tmesh), false);
-      put(field, face(cut, tmesh), direction);
-      put(field, face(opposite(cut, tmesh), tmesh), direction);
-    }
-  }
-
-  for(const auto& mv : moves) put(vpm, mv.first, mv.second);
-  // the new layout, with the same paths
-  auto refined = std::make_unique<Layout>(tmesh, field, singularities);
-  refined->add_feature_paths(edge_is_feature_map);
-  for(typename Layout::Path& path : paths) {
-    typename Layout::Path q;
-    q.is_feature = path.is_feature;
-    q.vertices.push_back(path.vertices.front());
-    for(std::size_t k = 0; k + 1 < path.vertices.size(); ++k) {
-      const vertex_descriptor a = path.vertices[k], b = path.vertices[k + 1];
-      if(!edge(a, b, tmesh).second) {
-        const auto it = inserted.find(std::make_pair((std::min)(a, b), (std::max)(a, b)));
-        if(it != inserted.end()) {
-          q.vertices.push_back(it->second);
-          if(k < path.directions.size()) q.directions.push_back(path.directions[k]);
+  // passes while they help: a cut of one pass can leave a patch whose left turn has a landing point only
+  // then, and a vertex takes part in one landing per pass
+  for(unsigned pass = 0; pass < internal::max_layout_refinement_passes; ++pass) {
+    const auto& traced = *layout;
+    // the landing points, one per edge
+    std::vector<std::pair<halfedge_descriptor, Point_3>> splits;
+    std::vector<vertex_descriptor> touched; // one landing per vertex: the moves and splits do not interact
+    std::vector<std::pair<vertex_descriptor, Point_3>> moves;
+    std::size_t invalid = 0;
+    for(std::size_t p = 0; p < traced.number_of_patches(); ++p) {
+      const auto condition = traced.validity(p);
+      if(condition == Layout::SATISFIED) continue;
+      ++invalid;
+      if(condition != Layout::NOT_CONVEX) continue;
+      const auto& P = traced.patch(p);
+      const auto& L = P.loops[0];
+      for(std::size_t i = 0; i < L.size(); ++i) {
+        if(P.turns[0][i] != Layout::LEFT_TURN) continue;
+        const auto landing = internal::cut_landing(tmesh, traced, L, i);
+        if(!landing.found) continue;
+        // the cut goes from v to the landing point through the patch-side face of the edge: straight through
+        // its third vertex z, moved onto the segment, if z is not v (z must then be a neighbour of v inside
+        // the patch, and the move must not turn any of its faces over)
+        const vertex_descriptor v = target(L[i], tmesh), z = target(next(landing.edge_halfedge, tmesh), tmesh);
+        const vertex_descriptor x = source(landing.edge_halfedge, tmesh), y = target(landing.edge_halfedge, tmesh);
+        if(std::find(touched.begin(), touched.end(), v) != touched.end() ||
+           std::find(touched.begin(), touched.end(), z) != touched.end() ||
+           std::find(touched.begin(), touched.end(), x) != touched.end() ||
+           std::find(touched.begin(), touched.end(), y) != touched.end())
+          continue;
+        if(z != v) {
+          if(!edge(v, z, tmesh).second) continue;
+          bool inside = true;
+          for(halfedge_descriptor g : halfedges_around_target(z, tmesh)) inside = inside && !traced.is_cut(edge(g, tmesh));
+          if(!inside) continue;
+          const auto pv = traced.point(v);
+          const auto vf = landing.point - pv;
+          const double t = (std::max)(0.2, (std::min)(0.8, CGAL::to_double((traced.point(z) - pv) * vf) / CGAL::to_double(vf * vf)));
+          const Point_3 moved = pv + t * vf;
+          if(!internal::move_keeps_orientation(tmesh, traced, z, moved, landing.edge_halfedge, landing.point)) continue;
+          moves.emplace_back(z, moved);
         }
+        touched.insert(touched.end(), {v, x, y, z});
+        splits.emplace_back(landing.edge_halfedge, landing.point);
       }
-      q.vertices.push_back(b);
-      if(k < path.directions.size()) q.directions.push_back(path.directions[k]);
     }
-    refined->add_path(std::move(q));
-  }
-  for(halfedge_descriptor h : corners)
-    if(!is_border(h, tmesh) && refined->is_cut(edge(h, tmesh))) refined->add_corner(h);
-  layout = std::move(refined);
+    if(pass == 0) stats.invalid_before = stats.invalid_after = invalid;
+    if(splits.empty()) break;
+    stats.split_edges += splits.size();
+    ++stats.passes;
 
-  const Trace_patch_layout_statistics repair =
-    repair_patch_layout(tmesh, *layout, parameters::combine(CGAL::parameters::verbose(verbose),
-                                                                parameters::number_of_threads(threads)));
-  for(Trace_patch_layout_statistics::Round r : repair.rounds) {
-    r.name = "refined_" + r.name; // the rounds of the repair after the refinement
-    trace_statistics.rounds.push_back(r);
+    // the paths and corners of the layout, read before the mesh changes
+    std::vector<typename Layout::Path> paths;
+    for(std::size_t id : traced.path_ids())
+      if(!traced.path(id).is_feature) paths.push_back(traced.path(id));
+    const std::vector<halfedge_descriptor> corners = traced.added_corners();
+
+    // the splits; the new vertex of each split edge, by its two ends
+    auto vpm = get(CGAL::vertex_point, tmesh);
+    std::map<std::pair<vertex_descriptor, vertex_descriptor>, vertex_descriptor> inserted;
+    for(const auto& s : splits) {
+      const halfedge_descriptor h = s.first;
+      const vertex_descriptor a = source(h, tmesh), b = target(h, tmesh);
+      const bool was_feature = get(edge_is_feature_map, edge(h, tmesh));
+      const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tmesh); // a -> m, then h: m -> b
+      const vertex_descriptor m = target(hnew, tmesh);
+      put(vpm, m, s.second);
+      put(edge_is_feature_map, edge(hnew, tmesh), was_feature);
+      put(edge_is_feature_map, edge(h, tmesh), was_feature);
+      inserted[std::make_pair((std::min)(a, b), (std::max)(a, b))] = m;
+      // each face beside the edge is cut from m to its opposite vertex; both parts keep its field
+      for(const halfedge_descriptor side : {h, opposite(h, tmesh)}) {
+        if(is_border(side, tmesh)) continue;
+        const face_descriptor f = face(side, tmesh);
+        const auto direction = get(field, f);
+        const halfedge_descriptor cut = side == h ? CGAL::Euler::split_face(hnew, next(h, tmesh), tmesh)
+                                                  : CGAL::Euler::split_face(side, next(next(side, tmesh), tmesh), tmesh);
+        put(edge_is_feature_map, edge(cut, tmesh), false);
+        put(field, face(cut, tmesh), direction);
+        put(field, face(opposite(cut, tmesh), tmesh), direction);
+      }
+    }
+
+    for(const auto& mv : moves) put(vpm, mv.first, mv.second);
+    // the new layout, with the same paths
+    auto refined = std::make_unique<Layout>(tmesh, field, singularities);
+    refined->add_feature_paths(edge_is_feature_map);
+    for(typename Layout::Path& path : paths) {
+      typename Layout::Path q;
+      q.is_feature = path.is_feature;
+      q.vertices.push_back(path.vertices.front());
+      for(std::size_t k = 0; k + 1 < path.vertices.size(); ++k) {
+        const vertex_descriptor a = path.vertices[k], b = path.vertices[k + 1];
+        if(!edge(a, b, tmesh).second) {
+          const auto it = inserted.find(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+          if(it != inserted.end()) {
+            q.vertices.push_back(it->second);
+            if(k < path.directions.size()) q.directions.push_back(path.directions[k]);
+          }
+        }
+        q.vertices.push_back(b);
+        if(k < path.directions.size()) q.directions.push_back(path.directions[k]);
+      }
+      refined->add_path(std::move(q));
+    }
+    for(halfedge_descriptor h : corners)
+      if(!is_border(h, tmesh) && refined->is_cut(edge(h, tmesh))) refined->add_corner(h);
+    layout = std::move(refined);
+
+    const Trace_patch_layout_statistics repair =
+      repair_patch_layout(tmesh, *layout, parameters::combine(CGAL::parameters::verbose(verbose),
+                                                                  parameters::number_of_threads(threads)));
+    for(Trace_patch_layout_statistics::Round r : repair.rounds) {
+      r.name = "refined_" + r.name; // the rounds of the repair after the refinement
+      trace_statistics.rounds.push_back(r);
+    }
+    trace_statistics.layout = repair.layout;
+    stats.invalid_after = repair.layout.patches - repair.layout.valid_patches;
+    if(stats.invalid_after == 0 || stats.invalid_after >= invalid) break;
   }
-  trace_statistics.layout = repair.layout;
-  stats.invalid_after = repair.layout.patches - repair.layout.valid_patches;
   stats.seconds = timer.time();
   trace_statistics.seconds += stats.seconds;
   if(verbose)
