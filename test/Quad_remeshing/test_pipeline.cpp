@@ -139,6 +139,31 @@ BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
   BOOST_TEST(r.find("smooth")->find("inverted_after")->number() == 0.);
 }
 
+// bunny with `layout_refinement`: the one invalid patch of its layout (a left turn beside a held crease's
+// tip) is cut after the refinement, the layout stage says so, and the quads are valid
+BOOST_AUTO_TEST_CASE(bunny_layout_refinement)
+{
+  Mesh t, q, q_default;
+  QR::read_and_repair(qr_test::data_file("bunny.off"), t);
+  const QR::Report r = QR::quad_remesh(t, q, QR::parameters::layout_refinement(true));
+  const QR::Report& layout = *r.find("layout");
+  BOOST_TEST_REQUIRE(layout.find("refinement") != nullptr);
+  const QR::Report& refinement = *layout.find("refinement");
+  BOOST_TEST(refinement.find("invalid_before")->number() == 1.);
+  BOOST_TEST(refinement.find("split_edges")->number() >= 1.);
+  BOOST_TEST(refinement.find("invalid_after")->number() == 0.);
+  BOOST_TEST(layout.find("valid_patches")->number() == layout.find("patches")->number());
+  const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
+  BOOST_TEST(quality.pure_quad);
+  BOOST_TEST(quality.valid);
+  BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(q.is_valid(false));
+  // off by default: no refinement record, another layout
+  const QR::Report d = QR::quad_remesh(t, q_default);
+  BOOST_TEST(d.find("layout")->find("refinement") == nullptr);
+  BOOST_TEST(d.find("layout")->find("valid_patches")->number() + 1. == d.find("layout")->find("patches")->number());
+}
+
 // elephant: a quad at a held vertex (a spur of two short feature edges where three lines meet) kept a
 // corner past 180 degrees that no move could mend, and both chords through it wind over most of the
 // surface (too long to split); the smoothing insets it, which gives that vertex an edge into the quad.
