@@ -796,23 +796,45 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
 // lies where a cut from there would meet the other side of the thin wedge at a right angle.
 // refine_patch_layout() makes that vertex (and puts the one between on the cut's line); the repair then
 // cuts the patch, and every patch is valid.
+// The stages before the layout refinement, as quad_remesh() runs them, on the mesh in `file`.
+struct Traced_for_refinement
+{
+  Mesh m;
+  Mesh::Property_map<E, bool> feature;
+  Mesh::Property_map<F, Vector_3> field;
+  Mesh::Property_map<V, int> singularity;
+  std::unique_ptr<Layout> layout;
+  CGAL::Quad_remeshing::Trace_patch_layout_statistics st;
+
+  explicit Traced_for_refinement(const std::string& file)
+  {
+    namespace QR = CGAL::Quad_remeshing;
+    QR::read_and_repair(qr_test::data_file(file), m);
+    feature = m.add_property_map<E, bool>("e:feature", false).first;
+    auto corner = m.add_property_map<V, bool>("v:corner", false).first;
+    QR::detect_feature_edges(m, feature, QR::parameters::vertex_is_feature_corner_map(corner));
+    QR::remesh_for_quadrangulation(m, feature, QR::parameters::combine(QR::parameters::quad_edge_length(QR::default_quad_edge_length(m)),
+                                                                       QR::parameters::vertex_is_feature_corner_map(corner)));
+    m.collect_garbage();
+    field = m.add_property_map<F, Vector_3>("f:cross_field", Vector_3(0, 0, 0)).first;
+    singularity = m.add_property_map<V, int>("v:singularity", 0).first;
+    QR::compute_cross_field(m, feature, field);
+    QR::compute_cross_field_singularities(m, feature, field, singularity);
+    layout = std::make_unique<Layout>(m, field, singularity);
+    st = QR::trace_patch_layout(m, feature, *layout);
+  }
+};
+
 BOOST_AUTO_TEST_CASE(refinement_gives_the_tip_cut_its_vertex)
 {
   namespace QR = CGAL::Quad_remeshing;
-  Mesh m;
-  QR::read_and_repair(qr_test::data_file("bunny.off"), m);
-  auto feature = m.add_property_map<E, bool>("e:feature", false).first;
-  auto corner = m.add_property_map<V, bool>("v:corner", false).first;
-  QR::detect_feature_edges(m, feature, QR::parameters::vertex_is_feature_corner_map(corner));
-  QR::remesh_for_quadrangulation(m, feature, QR::parameters::combine(QR::parameters::quad_edge_length(QR::default_quad_edge_length(m)),
-                                                                     QR::parameters::vertex_is_feature_corner_map(corner)));
-  m.collect_garbage();
-  auto field = m.add_property_map<F, Vector_3>("f:cross_field", Vector_3(0, 0, 0)).first;
-  auto singularity = m.add_property_map<V, int>("v:singularity", 0).first;
-  QR::compute_cross_field(m, feature, field);
-  QR::compute_cross_field_singularities(m, feature, field, singularity);
-  auto layout = std::make_unique<Layout>(m, field, singularity);
-  auto st = QR::trace_patch_layout(m, feature, *layout);
+  Traced_for_refinement t("bunny.off");
+  Mesh& m = t.m;
+  auto& feature = t.feature;
+  auto& field = t.field;
+  auto& singularity = t.singularity;
+  auto& layout = t.layout;
+  auto& st = t.st;
   const std::size_t rounds = st.rounds.size(), invalid = st.layout.patches - st.layout.valid_patches;
   BOOST_TEST_REQUIRE(invalid >= 1u);
   std::size_t features_before = 0, paths_before = 0;
@@ -856,6 +878,26 @@ BOOST_AUTO_TEST_CASE(refinement_gives_the_tip_cut_its_vertex)
   BOOST_TEST(again.split_edges == 0u);
   BOOST_TEST(layout.get() == same);
   BOOST_TEST(m.number_of_vertices() == vertices_before + rs.split_edges);
+}
+
+// Fertility's invalid patch is a wedge of 15 faces whose landing point lies between two and four times
+// the concave vertex's longer boundary edge away: the reach is four.
+BOOST_AUTO_TEST_CASE(refinement_reaches_across_a_wider_wedge)
+{
+  namespace QR = CGAL::Quad_remeshing;
+  Traced_for_refinement t("fertility.off");
+  const std::size_t invalid = t.st.layout.patches - t.st.layout.valid_patches;
+  BOOST_TEST_REQUIRE(invalid >= 1u);
+  const QR::Refine_patch_layout_statistics rs = QR::refine_patch_layout(t.m, t.feature, t.field, t.singularity, t.layout, t.st);
+  BOOST_TEST_MESSAGE("  fertility: " << rs.split_edges << " edges split, invalid patches " << rs.invalid_before << " -> "
+                     << rs.invalid_after);
+  BOOST_TEST(rs.invalid_before == invalid);
+  BOOST_TEST(rs.split_edges >= 1u);
+  BOOST_TEST(rs.invalid_after == 0u);
+  BOOST_TEST(t.m.is_valid(false));
+  for(std::size_t p = 0; p < t.layout->number_of_patches(); ++p) BOOST_TEST(t.layout->validity(p) == Layout::SATISFIED);
+  for(E e : t.m.edges())
+    if(t.feature[e]) BOOST_TEST(t.layout->is_cut(e));
 }
 
 BOOST_AUTO_TEST_CASE(quad_sizing_follows_curvature)

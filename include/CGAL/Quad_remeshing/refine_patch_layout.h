@@ -64,13 +64,16 @@ namespace internal {
 
 // at most this many passes of refine_patch_layout()
 constexpr unsigned max_layout_refinement_passes = 4;
+// a landing point is at most this many times the longer boundary edge at the concave vertex away (2 left
+// fertility's wedge of 15 faces without one; 8 finds no other)
+constexpr double landing_reach = 4.;
 
 // The point where a cut from the concave boundary vertex `target(L[i])` of a patch whose first loop is `L`
 // would meet another boundary edge of `L` at a right angle, if it lies inside that edge (away from its ends
-// by 15% of its length), near (within twice the longer of the vertex's two boundary edges) and splits the
-// angle of the patch at the vertex into two angles of 30 to 178 degrees (measured through the patch's fan
-// of faces, the direction projected into each face's plane). Of those, the nearest; `found` is false if
-// there is none.
+// by 15% of its length), near (within `landing_reach` times the longer of the vertex's two boundary edges)
+// and splits the angle of the patch at the vertex into two angles of 30 to 178 degrees (120 to 240 if it is
+// over 300; measured through the patch's fan of faces, the direction projected into each face's plane). Of
+// those, the nearest; `found` is false if there is none.
 template <typename Layout>
 struct Cut_landing
 {
@@ -116,7 +119,11 @@ Cut_landing<Layout> cut_landing(const TriangleMesh& tm, const Layout& layout,
   }
   if(prev(g, tm) != hin) return best;
   const double deg = CGAL_PI / 180.;
-  const double reach = 2. * (std::max)(length(layout.point(target(hout, tm)) - pv), length(pv - layout.point(source(hin, tm))));
+  // the cut splits the patch's angle at v into two convex ones, not too sharp; an angle of more than 300
+  // degrees (a left turn by the field's measure, but nearly the end of a line) into two about straight ones
+  const bool nearly_line_end = total > 300. * deg;
+  const double low = (nearly_line_end ? 120. : 30.) * deg, high = (nearly_line_end ? 240. : 178.) * deg;
+  const double reach = landing_reach * (std::max)(length(layout.point(target(hout, tm)) - pv), length(pv - layout.point(source(hin, tm))));
   for(std::size_t j = 0; j < m; ++j) {
     const halfedge_descriptor e = L[j];
     const vertex_descriptor x = source(e, tm), y = target(e, tm);
@@ -141,8 +148,7 @@ Cut_landing<Layout> cut_landing(const TriangleMesh& tm, const Layout& layout,
       if(angle(d, dp) > 60. * deg) continue;
       if(angle(dp, s.a) + angle(dp, s.b) <= s.angle + 1. * deg) { position = s.start + angle(dp, s.a); break; }
     }
-    if(position < 0. || position < 30. * deg || position > 178. * deg || total - position < 30. * deg ||
-       total - position > 178. * deg)
+    if(position < 0. || position < low || position > high || total - position < low || total - position > high)
       continue;
     best.found = true;
     best.edge_halfedge = e;
@@ -192,9 +198,12 @@ bool move_keeps_orientation(const TriangleMesh& tm, const Layout& layout, typena
   triangles often have none, and every cut the last resorts try leaves a U-turn (a sharp angle between
   the cut and the other side). For every left turn `v` of a non-convex patch, the point of another
   boundary edge of the same patch where the perpendicular from `v` meets it is the landing point: the
-  nearest such point inside an edge (away from its ends by 15% of its length), within twice the longer
-  boundary edge at `v`, whose direction from `v`, projected into the faces of the patch around `v`,
-  splits the patch's angle there into two angles of 30 to 178 degrees. The edge is split at the landing
+  nearest such point inside an edge (away from its ends by 15% of its length), within four times the
+  longer boundary edge at `v` (twice left fertility's wedge of 15 faces without one), whose direction
+  from `v`, projected into the faces of the patch around `v`, splits the patch's angle there into two
+  angles of 30 to 178 degrees; if that angle is more than 300 degrees (a left turn by the field's measure,
+  but nearly the end of a line: one of rocker_arm's patches), into two of 120 to 240 degrees, about
+  straight ones. The edge is split at the landing
   point, and its two faces towards their third vertices. If the third vertex `z` on the patch's side is
   not `v`, it must be a neighbour of `v` inside the patch (no path through it): it moves onto the segment
   from `v` to the landing point (its nearest point there, between 20% and 80% of the way), unless that
@@ -209,9 +218,14 @@ bool move_keeps_orientation(const TriangleMesh& tm, const Layout& layout, typena
 
   Every patch that was valid stays valid, and the number of invalid patches does not grow (the repair's
   rule). On the 22 development meshes (`quad_remesh()` with `layout_refinement`), 54 invalid patches of 8677
-  become 26: truck 34 -> 13 (in two passes), elephant 7 -> 3, rocker_arm 7 -> 6, camelhead 3 -> 2, bunny
-  1 -> 0; fertility and spot keep their one (no landing point qualifies). Of the 26 left, 9 turn back by U-turns only
-  (which the refinement does not look at), and 15 of the 17 others have no landing point. A pass
+  become 24: truck 34 -> 13 (in two passes), elephant 7 -> 3, rocker_arm 7 -> 5, camelhead 3 -> 2, bunny
+  and fertility 1 -> 0; spot keeps its one (no landing point qualifies). Of the 24 left, 6 have a sharp
+  U-turn (21 to 43 degrees: two paths, or a path and a line, meeting at a sharp angle) and 3 a U-turn of
+  about 360 degrees in a hairpin of a line a few hundredths of the quad edge length across (the
+  refinement looks at left turns only: a landing point for those hairpins, the perpendicular splitting
+  their angle into two about straight ones, was tried and found none); the others are left turns without
+  a landing point, most of them concave corners between two feature lines whose far side is out of
+  reach even at eight times the boundary edge. A pass
   takes a few hundredths of a second for the landings and the splits, and then as long as the rounds of
   `repair_patch_layout()`.
 
