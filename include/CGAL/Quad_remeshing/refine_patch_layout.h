@@ -298,11 +298,8 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
         // the patch, and the move must not turn any of its faces over)
         const vertex_descriptor v = target(L[i], tmesh), z = target(next(landing.edge_halfedge, tmesh), tmesh);
         const vertex_descriptor x = source(landing.edge_halfedge, tmesh), y = target(landing.edge_halfedge, tmesh);
-        if(std::find(touched.begin(), touched.end(), v) != touched.end() ||
-           std::find(touched.begin(), touched.end(), z) != touched.end() ||
-           std::find(touched.begin(), touched.end(), x) != touched.end() ||
-           std::find(touched.begin(), touched.end(), y) != touched.end())
-          continue;
+        auto is_touched = [&](vertex_descriptor w) { return std::find(touched.begin(), touched.end(), w) != touched.end(); };
+        if(is_touched(v) || is_touched(z) || is_touched(x) || is_touched(y)) continue;
         if(z != v) {
           if(!edge(v, z, tmesh).second) continue;
           bool inside = true;
