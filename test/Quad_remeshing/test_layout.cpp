@@ -791,11 +791,6 @@ BOOST_AUTO_TEST_CASE(fandisk_rounds)
   for(E e : m.edges()) if(feature[e]) BOOST_TEST(cut.is_cut(e));
 }
 
-// bunny through the stages as quad_remesh() runs them: a held crease ends in a sharp tip, and the patch
-// beside it keeps a left turn where the crease bends back, because no vertex of the remeshed triangles
-// lies where a cut from there would meet the other side of the thin wedge at a right angle.
-// refine_patch_layout() makes that vertex (and puts the one between on the cut's line); the repair then
-// cuts the patch, and every patch is valid.
 // The stages before the layout refinement, as quad_remesh() runs them, on the mesh in `file`.
 struct Traced_for_refinement
 {
@@ -825,6 +820,11 @@ struct Traced_for_refinement
   }
 };
 
+// bunny through the stages as quad_remesh() runs them: a held crease ends in a sharp tip, and the patch
+// beside it keeps a left turn where the crease bends back, because no vertex of the remeshed triangles
+// lies where a cut from there would meet the other side of the thin wedge at a right angle.
+// refine_patch_layout() makes that vertex (and puts the one between on the cut's line); the repair then
+// cuts the patch, and every patch is valid.
 BOOST_AUTO_TEST_CASE(refinement_gives_the_tip_cut_its_vertex)
 {
   namespace QR = CGAL::Quad_remeshing;

@@ -1207,7 +1207,7 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   \ingroup PkgQuadRemeshingRef
   Runs the rounds of `trace_patch_layout()` that come after its clean-up, `last_resort_cuts`,
   `path_part_removal` and `corners`, on a layout that already has its paths: typically a layout traced by
-  `trace_patch_layout()` whose paths were copied onto a refined mesh (see `refine_patch_layout_tips()`),
+  `trace_patch_layout()` whose paths were copied onto a refined mesh (see `refine_patch_layout()`),
   so that the patches the refinement touched get their cuts. A patch that was valid stays valid: every cut
   and every removal lowers the number of invalid patches or keeps it.
 
