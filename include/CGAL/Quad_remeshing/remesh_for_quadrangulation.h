@@ -372,7 +372,11 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
   shortest diagonal first; the surface does not change), so that the split pass finds short edges only:
   on abc_00000006 (37k faces, estimate 43) the remeshing takes 0.9 s instead of 4.8 s and the whole run
   60 MiB instead of 98 (2.7 KiB per input triangle before, 1.6 after). Other inputs are remeshed
-  exactly as before.
+  exactly as before. The adaptive pass starts from this pass 1 too (it used to start from a single
+  `isotropic_remeshing()` call, whatever the estimate): with it, `--until remesh` takes 2.7 s and 57 MiB
+  on abc_00000006 instead of 6.0 s and 112 MiB, and 8.3 s and 93 MiB on abc_00000009 (estimate 51,
+  the coarse pass first) instead of 23 s and 252 MiB, both as close to the input as before (qmeval: 0.10% and 0.015%
+  of the diagonal); the trees of the input it projects onto are built after pass 1, out of its peak.
 
   Pass 2 (`adaptive_remeshing`, off by default, see below) is the package's own loop of edge splits, edge collapses,
   edge flips, tangential relaxation and projection onto the input, driven by a target edge length per
@@ -633,8 +637,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   }
 
   // the input surface, its feature lines and its vertices: projections and distances. Without the
-  // adaptive pass only the surface is used (by the final splitting), and its tree is built after the
-  // uniform pass, so that it does not add to the peak memory of isotropic_remeshing() (which builds
+  // adaptive pass only the surface is used (by the final splitting). The trees are built after the
+  // uniform pass, so that they do not add to the peak memory of isotropic_remeshing() (which builds
   // its own trees of the input)
   internal::Remeshing_reference<GT> reference;
   reference.triangles.reserve(st.faces_before);
@@ -655,7 +659,6 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
   {
     reference.points.reserve(st.vertices_before);
     for(vertex_descriptor v : vertices(tmesh)) reference.points.push_back(get(vpm, v));
-    reference.build();
   }
   const CGAL::Bbox_3 box = PMP::bbox(tmesh, CGAL::parameters::vertex_point_map(vpm));
   const double diagonal = internal::bbox_diagonal(box);
@@ -809,13 +812,8 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
         if(get(constrained, edge(h, tmesh))) { line_points.push_back(get(vpm, v)); break; }
     }
     for(vertex_descriptor v : held_corners) put(fixed, v, true);
-    if(adaptive && !held_segments.empty())
-    {
-      // the splits of the adaptive pass project onto either kind of line
+    if(adaptive) // the splits of the adaptive pass project onto either kind of line
       reference.feature_segments.insert(reference.feature_segments.end(), held_segments.begin(), held_segments.end());
-      reference.features.rebuild(reference.feature_segments.begin(), reference.feature_segments.end());
-      reference.features.accelerate_distance_queries();
-    }
   }
   else
     for(vertex_descriptor v : vertices(tmesh)) put(fixed, v, bool(get(vcm, v)));
@@ -838,15 +836,12 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     for(vertex_descriptor v : bends) put(fixed, v, true);
     st.bend_vertices_held = bends.size();
   }
-  if(adaptive)
-  {
-    PMP::isotropic_remeshing(group_faces().large, st.target_edge_length, tmesh, remeshing_np(constrained, fixed));
-    remesh_small_components(constrained, fixed);
-  }
-  else if(hold_sharp)
+  if(hold_sharp) // (always with the adaptive pass)
     uniform_pass(constrained, fixed);
   else
     uniform_pass(edge_is_feature_map, fixed);
+  if(adaptive) // (uniform_pass() built the surface's tree)
+    reference.build_features();
   st.seconds_uniform = timer.time();
   if(verbose)
     std::cerr << "[remeshing] uniform pass at " << st.target_edge_length << ": "

@@ -49,9 +49,8 @@ struct Remeshing_reference
     surface.accelerate_distance_queries();
   }
 
-  void build()
+  void build_features()
   {
-    build_surface();
     if(!feature_segments.empty())
     {
       features.rebuild(feature_segments.begin(), feature_segments.end());
