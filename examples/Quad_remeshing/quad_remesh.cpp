@@ -483,6 +483,7 @@ private:
     std::optional<QR::Refine_patch_layout_statistics> rs;
     if(opt_.refine_layout)
       rs = QR::refine_patch_layout(state_.tmesh, state_.feature, state_.field, state_.singularity, state_.layout, st, np);
+    state_.layout->release_direction_graph(); // (no more paths are traced)
     budget_.record("layout", st.report());
     QR::Report r = st.report();
     if(rs) r["refinement"] = rs->report();

@@ -302,6 +302,7 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   std::optional<Refine_patch_layout_statistics> refinement;
   if(choose_parameter(get_parameter(np, internal_np::layout_refinement), false))
     refinement = refine_patch_layout(tm, feature, field, singularity, layout_ptr, layout_stats, layout_np);
+  layout_ptr->release_direction_graph(); // (no more paths are traced)
   const Layout& layout = *layout_ptr;
   report["layout"] = layout_stats.report();
   if(refinement) report["layout"]["refinement"] = refinement->report();
