@@ -10,12 +10,14 @@
 
 #include <CGAL/Quad_remeshing/internal/layout/field_directions.h>
 
-#include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/iterator/transform_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <map>
@@ -36,6 +38,82 @@ struct Graph_path
   std::vector<int> directions;
   double cost = 0.;
 };
+
+/// An arc of G, stored in the out-arc list of its source node: 16 bytes, in place (Boost's adjacency_list
+/// keeps a bundled edge property on the heap, one allocation per arc).
+struct Direction_arc
+{
+  std::uint32_t to = 0;
+  std::int32_t middle = -1; // the middle node of a two-hop arc, -1 for a mesh-edge arc
+  double weight = 0.;
+};
+
+/// An arc as Boost.Graph sees it (the `edge_descriptor` of `Direction_arcs`).
+struct Direction_arc_ref
+{
+  std::size_t from = 0;
+  const Direction_arc* arc = nullptr;
+  bool operator==(const Direction_arc_ref& o) const { return from == o.from && arc == o.arc; }
+  bool operator!=(const Direction_arc_ref& o) const { return !(*this == o); }
+};
+
+/// The nodes of G with their out-arc lists: a model of Boost.Graph's `IncidenceGraph`, for its Dijkstra.
+struct Direction_arcs
+{
+  std::vector<std::vector<Direction_arc>> out;
+
+  struct Make_ref
+  {
+    std::size_t from = 0;
+    Direction_arc_ref operator()(const Direction_arc& a) const { return Direction_arc_ref{from, &a}; }
+  };
+  typedef boost::transform_iterator<Make_ref, std::vector<Direction_arc>::const_iterator, Direction_arc_ref,
+                                    Direction_arc_ref> Out_iterator;
+};
+
+inline std::pair<Direction_arcs::Out_iterator, Direction_arcs::Out_iterator> out_edges(std::size_t u, const Direction_arcs& g)
+{
+  const Direction_arcs::Make_ref f{u};
+  return {Direction_arcs::Out_iterator(g.out[u].begin(), f), Direction_arcs::Out_iterator(g.out[u].end(), f)};
+}
+inline std::size_t out_degree(std::size_t u, const Direction_arcs& g) { return g.out[u].size(); }
+inline std::size_t source(const Direction_arc_ref& e, const Direction_arcs&) { return e.from; }
+inline std::size_t target(const Direction_arc_ref& e, const Direction_arcs&) { return e.arc->to; }
+
+/// The weight of an arc, as a readable property map.
+struct Direction_arc_weight_map
+{
+  typedef Direction_arc_ref key_type;
+  typedef double value_type;
+  typedef double reference;
+  typedef boost::readable_property_map_tag category;
+  friend double get(const Direction_arc_weight_map&, const Direction_arc_ref& e) { return e.arc->weight; }
+};
+
+} // namespace internal
+} // namespace Quad_remeshing
+} // namespace CGAL
+
+namespace boost {
+template <>
+struct graph_traits<CGAL::Quad_remeshing::internal::Direction_arcs>
+{
+  typedef std::size_t vertex_descriptor;
+  typedef CGAL::Quad_remeshing::internal::Direction_arc_ref edge_descriptor;
+  typedef directed_tag directed_category;
+  typedef allow_parallel_edge_tag edge_parallel_category;
+  typedef incidence_graph_tag traversal_category;
+  typedef CGAL::Quad_remeshing::internal::Direction_arcs::Out_iterator out_edge_iterator;
+  typedef std::size_t degree_size_type;
+  typedef std::size_t vertices_size_type;
+  typedef std::size_t edges_size_type;
+  static vertex_descriptor null_vertex() { return vertex_descriptor(-1); }
+};
+} // namespace boost
+
+namespace CGAL {
+namespace Quad_remeshing {
+namespace internal {
 
 /// Thrown by the visitor to stop Dijkstra at the first end node whose distance is final.
 struct Dijkstra_end_reached
@@ -80,12 +158,8 @@ template <typename Vector_3>
 class Direction_graph
 {
 public:
-  struct Arc
-  {
-    double weight = 0.;
-    std::ptrdiff_t middle = -1; // the middle node of a two-hop arc, -1 for a mesh-edge arc
-  };
-  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property, Arc> Graph;
+  typedef Direction_arc Arc;
+  typedef Direction_arcs Graph;
 
   /// `frames[v]`: the four directions at vertex `v`; `nbrs[v]`: its neighbours (ascending order for
   /// determinism); `points[v]`: its position; `singular[v]`: excluded; `blocked_edges`: set of
@@ -140,7 +214,10 @@ public:
   {
     const std::size_t nv = frames.size();
     nodes_ = 4 * nv;
-    g_ = Graph(nodes_ + 1); // the nodes after the 4|V| direction nodes are the spare sources of the searches
+    if(nodes_ + 64 > std::size_t((std::numeric_limits<std::int32_t>::max)()))
+      throw std::length_error("Direction_graph: too many vertices for 32-bit node indices");
+    // the nodes after the 4|V| direction nodes are the spare sources of the searches
+    g_.out.assign(nodes_ + 1, {});
     frames_ = &frames;
     nbrs_ = &nbrs;
     singular_ = &singular;
@@ -159,7 +236,7 @@ public:
   {
     for(std::size_t i : vs)
       for(std::size_t k = 0; k < 4; ++k) {
-        boost::clear_out_edges(4 * i + k, g_);
+        g_.out[4 * i + k].clear();
         add_node_arcs(4 * i + k);
       }
   }
@@ -170,10 +247,15 @@ public:
   /// be called during a search.
   void reserve_searches(std::size_t k)
   {
-    while(boost::num_vertices(g_) < nodes_ + k) boost::add_vertex(g_);
+    if(g_.out.size() < nodes_ + k) g_.out.resize(nodes_ + k);
     if(searches_.size() < k) searches_.resize(k);
   }
-  std::size_t number_of_arcs() const { return boost::num_edges(g_); }
+  std::size_t number_of_arcs() const
+  {
+    std::size_t n = 0;
+    for(const auto& o : g_.out) n += o.size();
+    return n;
+  }
 
   /// Shortest path from `start` to the first end node reached. The ends are the nodes `ends` and, when `loop`,
   /// `start` itself (the path is then a loop), but no node of the vertex `skip_vertex` (-1: none). The search
@@ -182,7 +264,7 @@ public:
   std::optional<Graph_path> shortest_path(std::size_t start, const std::vector<std::size_t>& ends, bool loop,
                                           std::size_t skip_vertex, std::size_t slot)
   {
-    const std::size_t n = boost::num_vertices(g_);
+    const std::size_t n = g_.out.size();
     const std::size_t spare = nodes_ + slot;
     if(spare >= n || slot >= searches_.size())
       throw std::logic_error("Direction_graph: no spare node for this search slot (bug)");
@@ -196,7 +278,7 @@ public:
     // and a start on a path vertex may leave it in a direction parallel to that path (into the patch)
     const std::size_t source = spare;
     for(const Hop& h : direct_hops(start / 4, int(start % 4), true))
-      boost::add_edge(spare, h.to, Arc{std::abs(h.drift) + length_weight_ * h.advance, -1}, g_);
+      g_.out[spare].push_back(Arc{std::uint32_t(h.to), -1, std::abs(h.drift) + length_weight_ * h.advance});
     // Searches stopped at a patch's boundary reach few nodes: the search arrays persist between searches
     // and only the nodes a search reached are reset, instead of initialising all 4|V| nodes every time.
     const double infinity = (std::numeric_limits<double>::max)();
@@ -217,7 +299,7 @@ public:
     vis.touched = &touched_;
     dist_[source] = 0.;
     std::optional<std::size_t> reached;
-    const auto index = boost::get(boost::vertex_index, g_);
+    const boost::typed_identity_property_map<std::size_t> index;
     try {
       // boost::dijkstra_shortest_paths_no_init(), whose body this is, allocates and fills a heap-index array
       // of all 4|V| nodes for every search (its memset was 12% of truck's layout time): the slot keeps one. Its
@@ -226,7 +308,7 @@ public:
       const auto pred_map = boost::make_iterator_property_map(pred_.begin(), index);
       const auto dist_map = boost::make_iterator_property_map(dist_.begin(), index);
       const auto heap_index_map = boost::make_iterator_property_map(s.heap_index.begin(), index);
-      const auto weight_map = boost::get(&Arc::weight, g_);
+      const Direction_arc_weight_map weight_map;
       typedef boost::d_ary_heap_indirect<Graph_node, 4, std::remove_const_t<decltype(heap_index_map)>,
                                          std::remove_const_t<decltype(dist_map)>, std::less<double>> Queue;
       Queue queue(dist_map, heap_index_map, std::less<double>());
@@ -244,10 +326,10 @@ public:
     } catch(...) {
       // the arrays persist: left dirty, they are initialised again by the next search of this slot
       s.dist.clear();
-      boost::clear_out_edges(spare, g_);
+      g_.out[spare].clear();
       throw;
     }
-    boost::clear_out_edges(spare, g_);
+    g_.out[spare].clear();
     std::vector<std::size_t> nodes;
     double cost = 0.;
     if(reached) {
@@ -277,10 +359,9 @@ public:
         // comes from the spare node and is always a mesh edge
         std::ptrdiff_t middle = -1;
         double best = (std::numeric_limits<double>::max)();
-        typename boost::graph_traits<Graph>::out_edge_iterator e, e_end;
         if(i > 1)
-        for(boost::tie(e, e_end) = boost::out_edges(nodes[i - 1], g_); e != e_end; ++e)
-          if(boost::target(*e, g_) == nodes[i] && g_[*e].weight < best) { best = g_[*e].weight; middle = g_[*e].middle; }
+          for(const Arc& a : g_.out[nodes[i - 1]])
+            if(a.to == nodes[i] && a.weight < best) { best = a.weight; middle = a.middle; }
         if(middle >= 0) push(p, std::size_t(middle));
       }
       push(p, nodes[i]);
@@ -318,16 +399,18 @@ private:
     for(const Hop& h : first) {
       const double w = std::abs(h.drift) + length_weight_ * h.advance;
       auto it = out.find(h.to);
-      if(it == out.end() || w < it->second.weight) out[h.to] = Arc{w, -1};
+      if(it == out.end() || w < it->second.weight) out[h.to] = Arc{std::uint32_t(h.to), -1, w};
     }
     for(const Hop& h1 : first)
       for(const Hop& h2 : hops_of(h1.to)) {
         if(h2.to / 4 == u / 4 || h1.drift * h2.drift >= 0.) continue; // only zig-zags gain
         const double w = std::abs(h1.drift + h2.drift) + length_weight_ * (h1.advance + h2.advance);
         auto it = out.find(h2.to);
-        if(it == out.end() || w < it->second.weight) out[h2.to] = Arc{w, std::ptrdiff_t(h1.to)};
+        if(it == out.end() || w < it->second.weight) out[h2.to] = Arc{std::uint32_t(h2.to), std::int32_t(h1.to), w};
       }
-    for(const auto& a : out) boost::add_edge(u, a.first, a.second, g_);
+    std::vector<Arc>& arcs = g_.out[u];
+    arcs.reserve(out.size());
+    for(const auto& a : out) arcs.push_back(a.second);
   }
 
   bool leaves_along_path(std::size_t i, int dir) const
