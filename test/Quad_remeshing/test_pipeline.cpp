@@ -122,6 +122,9 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
   const QR::Quad_mesh_quality quality = QR::quad_mesh_quality(q);
   BOOST_TEST(quality.valid);
   BOOST_TEST(quality.min_scaled_jacobian > 0.05);
+  // The untangling of the smoothing mended two bow-tie quads of draco by flipping them over (convex, so
+  // their scaled Jacobian was positive); it now judges a quad against the orientation of its neighbourhood.
+  BOOST_TEST(qr_test::flipped_over_quads(q) == 0u);
 }
 
 // spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled

@@ -8,7 +8,9 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
+#include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <string>
 
@@ -23,6 +25,33 @@ inline std::string data_file(const std::string& name) { return std::string(QR_TE
 
 /// a path for files written by the tests
 inline std::string output_file(const std::string& name) { return std::string(QR_TEST_BINARY_DIR) + "/" + name; }
+
+/// The quads of `q` flipped over in the surface: the normal of the quad's diagonals is turned by more than
+/// 120 degrees from that of every quad across one of its edges. The scaled Jacobian, measured in the
+/// quad's own plane, does not see them: a convex quad flipped over is as good as any by that measure.
+inline std::size_t flipped_over_quads(const Mesh& q)
+{
+  auto normal = [&](Mesh::Face_index f) {
+    std::vector<Point_3> c;
+    for(auto v : CGAL::vertices_around_face(q.halfedge(f), q)) c.push_back(q.point(v));
+    return c.size() == 4 ? CGAL::cross_product(c[2] - c[0], c[3] - c[1]) : Kernel::Vector_3(0, 0, 0);
+  };
+  std::size_t flipped = 0;
+  for(auto f : q.faces())
+  {
+    const Kernel::Vector_3 n = normal(f);
+    std::size_t neighbours = 0, against = 0;
+    for(auto h : CGAL::halfedges_around_face(q.halfedge(f), q))
+    {
+      if(q.is_border(q.opposite(h))) continue;
+      const Kernel::Vector_3 m = normal(q.face(q.opposite(h)));
+      ++neighbours;
+      if(n * m < -0.5 * std::sqrt(n.squared_length() * m.squared_length())) ++against;
+    }
+    if(neighbours > 0 && against == neighbours) ++flipped;
+  }
+  return flipped;
+}
 
 /// A unit square plate with a square hole (0.2..0.5 x 0.3..0.6) and a cap triangle P Q R: P = (0.5, 0.6) and
 /// Q = (0.5, 0.3) are the hole's right corners, R = (0.504, 0.1) lies almost on the line PQ beyond Q (the angle
