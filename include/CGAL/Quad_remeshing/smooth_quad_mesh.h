@@ -482,9 +482,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       if(l > 0.) put(orientation, f, n / l);
     }
   }
-  auto quad_sj = [&](q_face f) {
-    std::array<Point_3, 4> pts;
-    if(!quad_points(f, pts)) return 1.;
+  // (of the four corners of a quad)
+  auto corners_sj = [&](const std::array<Point_3, 4>& pts) {
     for(int i = 0; i < 4; ++i)
       if(CGAL::to_double(CGAL::squared_distance(pts[i], pts[(i + 1) % 4])) <= same_sq) return -1.;
     // a wider margin than the evaluator's (1e-12): nearly collinear is as bad as collinear here
@@ -493,23 +492,25 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     const double s = internal::quality::quad_scaled_jacobian(pts);
     return s == 0. ? -1. : s;
   };
+  auto quad_sj = [&](q_face f) {
+    std::array<Point_3, 4> pts;
+    return quad_points(f, pts) ? corners_sj(pts) : 1.;
+  };
   // the scaled Jacobian the moves are judged by: a flipped quad (see above) counts as the worst quad, so
   // that no move flips a quad over and the untangling tries to turn a flipped one back. (The statistics
   // and the connectivity changes below go by the scaled Jacobian alone: splitting the chords of a quad
   // that stays flipped cost truck 44 chord splits instead of 8, 19223 quads instead of 14649 and 49 s
   // instead of 29.)
   auto oriented_sj = [&](q_face f) {
+    std::array<Point_3, 4> pts;
+    if(!quad_points(f, pts)) return 1.;
     if(get(has_orientation, f))
     {
-      std::array<Point_3, 4> pts;
-      if(quad_points(f, pts))
-      {
-        const Vector_3 n = CGAL::cross_product(pts[2] - pts[0], pts[3] - pts[1]);
-        if(CGAL::to_double(n * get(orientation, f)) < -0.5 * std::sqrt(CGAL::to_double(n.squared_length())))
-          return -1.;
-      }
+      const Vector_3 n = CGAL::cross_product(pts[2] - pts[0], pts[3] - pts[1]);
+      if(CGAL::to_double(n * get(orientation, f)) < -0.5 * std::sqrt(CGAL::to_double(n.squared_length())))
+        return -1.;
     }
-    return quad_sj(f);
+    return corners_sj(pts);
   };
   auto sj_figures = [&](double& mn, double& mean, std::size_t& inverted) {
     mn = 1.;
