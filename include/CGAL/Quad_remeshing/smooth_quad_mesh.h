@@ -448,9 +448,6 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     }
     return i == 4;
   };
-  // A collapsed quad (a (nearly) zero-length edge, or all four corners (nearly) collinear, as the
-  // evaluator's degenerate faces) counts as the worst quad, so that no move trades an inverted quad
-  // for a collapsed one (sliding along a feature line can put a vertex onto the corner at its end).
   // The orientation of every quad at the start, from its neighbourhood: the sum over its corners of the
   // unit normals (of the diagonals) of their quads, leaving out the quads whose scaled Jacobian is not
   // positive (a bow-tie's normal means nothing). A quad whose own normal is turned by more than 120
@@ -482,7 +479,10 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       if(l > 0.) put(orientation, f, n / l);
     }
   }
-  // (of the four corners of a quad)
+  // The scaled Jacobian of the four corners of a quad.
+  // A collapsed quad (a (nearly) zero-length edge, or all four corners (nearly) collinear, as the
+  // evaluator's degenerate faces) counts as the worst quad, so that no move trades an inverted quad
+  // for a collapsed one (sliding along a feature line can put a vertex onto the corner at its end).
   auto corners_sj = [&](const std::array<Point_3, 4>& pts) {
     for(int i = 0; i < 4; ++i)
       if(CGAL::to_double(CGAL::squared_distance(pts[i], pts[(i + 1) % 4])) <= same_sq) return -1.;
@@ -497,10 +497,8 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return quad_points(f, pts) ? corners_sj(pts) : 1.;
   };
   // the scaled Jacobian the moves are judged by: a flipped quad (see above) counts as the worst quad, so
-  // that no move flips a quad over and the untangling tries to turn a flipped one back. (The statistics
-  // and the connectivity changes below go by the scaled Jacobian alone: splitting the chords of a quad
-  // that stays flipped cost truck 44 chord splits instead of 8, 19223 quads instead of 14649 and 49 s
-  // instead of 29.)
+  // that no move flips a quad over and the untangling tries to turn a flipped one back (the statistics and
+  // the connectivity changes go by `quad_sj`, see the documentation)
   auto oriented_sj = [&](q_face f) {
     std::array<Point_3, 4> pts;
     if(!quad_points(f, pts)) return 1.;
