@@ -49,7 +49,7 @@ const std::vector<std::string> stage_names = {"repair", "features", "remesh", "f
                                               "layout", "quantize", "quadrangulate", "smooth"};
 const std::vector<std::string> quality_keys = {
   "irregular_vertices", "irregular_boundary_vertices", "angle_deviation", "edge_length_deviation",
-  "mean_scaled_jacobian", "min_scaled_jacobian", "non_positive_scaled_jacobian", "pure_quad", "valid",
+  "mean_scaled_jacobian", "min_scaled_jacobian", "non_positive_scaled_jacobian", "flipped_quads", "pure_quad", "valid",
   "hausdorff_max", "feature_coverage"};
 
 struct Options
@@ -289,9 +289,9 @@ void write_summary_markdown(const std::string& path, const std::vector<Run>& run
     s << std::fixed << std::setprecision(digits) << v->number();
     return s.str();
   };
-  os << "| mesh | status | seconds | peak MiB | quads | irregular | SJ mean | SJ min | SJ <= 0 | feature coverage "
-        "| Hausdorff / diagonal | valid |\n"
-     << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|\n";
+  os << "| mesh | status | seconds | peak MiB | quads | irregular | SJ mean | SJ min | SJ <= 0 | flipped "
+        "| feature coverage | Hausdorff / diagonal | valid |\n"
+     << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|\n";
   for(const Run& r : runs)
   {
     const QR::Report* output = r.report.find("output");
@@ -302,7 +302,7 @@ void write_summary_markdown(const std::string& path, const std::vector<Run>& run
        << r.peak_kb / 1024 << " | " << fixed(output ? output->find("F") : nullptr, 0) << " | "
        << fixed(get("irregular_vertices"), 0) << " | " << fixed(get("mean_scaled_jacobian"), 3) << " | "
        << fixed(get("min_scaled_jacobian"), 3) << " | " << fixed(get("non_positive_scaled_jacobian"), 0) << " | "
-       << fixed(get("feature_coverage"), 3) << " | " << fixed(get("hausdorff_max"), 4) << " | "
+       << fixed(get("flipped_quads"), 0) << " | " << fixed(get("feature_coverage"), 3) << " | " << fixed(get("hausdorff_max"), 4) << " | "
        << (valid ? (valid->boolean() ? "yes" : "no") : "-") << " |\n";
   }
   os << "\n";
@@ -432,7 +432,7 @@ int main(int argc, char** argv)
 
   // Summary, like the paper's Thingi10K statistics.
   QR::Report summary = QR::Report::object();
-  std::size_t ok = 0, quad_outputs = 0;
+  std::size_t ok = 0, quad_outputs = 0, inverted_outputs = 0;
   std::vector<double> times, sj, irregular, peak_mib, kb_per_triangle;
   std::vector<std::string> over_time, over_memory;
   for(const Run& r : runs)
@@ -459,6 +459,10 @@ int main(int argc, char** argv)
       ++quad_outputs;
       if(const QR::Report* v = q->find("mean_scaled_jacobian")) sj.push_back(v->number());
       if(const QR::Report* v = q->find("irregular_vertices")) irregular.push_back(v->number());
+      // inverted in either sense: a scaled Jacobian <= 0, or flipped over (see Quad_mesh_quality)
+      const QR::Report* bad_sj = q->find("non_positive_scaled_jacobian");
+      const QR::Report* flipped = q->find("flipped_quads");
+      if((bad_sj && bad_sj->number() > 0.) || (flipped && flipped->number() > 0.)) ++inverted_outputs;
     }
   }
   summary["meshes"] = runs.size();
@@ -473,6 +477,7 @@ int main(int argc, char** argv)
   {
     summary["SJ_mean_median"] = percentile(sj, 0.5);
     summary["irregular_median"] = percentile(irregular, 0.5);
+    summary["outputs_with_inverted_quads"] = inverted_outputs;
   }
   summary["peak_mib_median"] = percentile(peak_mib, 0.5);
   summary["peak_mib_max"] = percentile(peak_mib, 1.0);

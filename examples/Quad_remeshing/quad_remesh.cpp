@@ -761,6 +761,7 @@ private:
           auto num = [&](const char* k) { const QR::Report* v = q->find(k); return v ? v->number() : 0.; };
           os << "  quality: irregular " << num("irregular_vertices") << ", angle deviation " << num("angle_deviation")
              << " deg, scaled Jacobian mean " << num("mean_scaled_jacobian") << " min " << num("min_scaled_jacobian")
+             << ", inverted " << num("non_positive_scaled_jacobian") << " + flipped over " << num("flipped_quads")
              << ", Hausdorff " << num("hausdorff_max") << " of the diagonal, feature coverage " << num("feature_coverage")
              << ", valid " << (q->find("valid") && q->find("valid")->boolean() ? "yes" : "no") << "\n";
         }

@@ -125,6 +125,7 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
   // The untangling of the smoothing mended two bow-tie quads of draco by flipping them over (convex, so
   // their scaled Jacobian was positive); it now judges a quad against the orientation of its neighbourhood.
   BOOST_TEST(qr_test::flipped_over_quads(q) == 0u);
+  BOOST_TEST(quality.flipped_quads == 0u); // (the package's own count, computed on the polygons)
 }
 
 // spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled

@@ -214,6 +214,48 @@ BOOST_AUTO_TEST_CASE(concave_and_bow_tie_quads)
   const QR::Quad_mesh_quality r = QR::polygon_soup_quality(pts, polys);
   BOOST_TEST(r.inconsistent_edges == 4u);
   BOOST_TEST(r.min_scaled_jacobian == 1., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(r.flipped_quads == 0u); // (normals are compared across consistent edges only)
+}
+
+BOOST_AUTO_TEST_CASE(flipped_over_quads)
+{
+  // Two unit squares hinged on the edge x = 0, the second turned by `fold` degrees about it: past 120
+  // degrees each square is flipped over against its only neighbour, with a scaled Jacobian of 1 each.
+  auto hinge = [](double fold) {
+    const double t = fold * pi / 180.;
+    const std::vector<Point_3> pts = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0),
+                                      Point_3(-std::cos(t), 1, std::sin(t)), Point_3(-std::cos(t), 0, std::sin(t))};
+    return QR::polygon_soup_quality(pts, Polygons{{0, 1, 2, 3}, {3, 4, 5, 0}});
+  };
+  BOOST_TEST(hinge(0.).flipped_quads == 0u);
+  BOOST_TEST(hinge(110.).flipped_quads == 0u);
+  const QR::Quad_mesh_quality folded = hinge(130.);
+  BOOST_TEST(folded.flipped_quads == 2u);
+  BOOST_TEST(folded.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(folded.min_scaled_jacobian == 1., boost::test_tools::tolerance(1e-12));
+
+  // a Z-fold in a strip of five quads: the middle one runs back under the fourth, upside down, against both
+  // its neighbours; the others each have a neighbour that agrees with them
+  std::vector<Point_3> strip;
+  for(const auto& xz : std::vector<std::pair<double, double>>{{0, 0}, {1, 0}, {2, 0}, {1.2, 0.01}, {2.2, 0.02}, {3.2, 0.02}})
+  {
+    strip.emplace_back(xz.first, 0, xz.second);
+    strip.emplace_back(xz.first, 1, xz.second);
+  }
+  Polygons quads;
+  for(std::size_t i = 0; i < 5; ++i) quads.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  const QR::Quad_mesh_quality z = QR::polygon_soup_quality(strip, quads);
+  BOOST_TEST(z.inconsistent_edges == 0u);
+  BOOST_TEST(z.flipped_quads == 1u);
+  BOOST_TEST(z.non_positive_scaled_jacobian == 0u);
+  BOOST_TEST(z.min_scaled_jacobian > 0.9);
+
+  // a closed cube: every quad's neighbours are at 90 degrees
+  Mesh cube;
+  CGAL::make_hexahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0), Point_3(0, 1, 1),
+                        Point_3(0, 0, 1), Point_3(1, 0, 1), Point_3(1, 1, 1), cube);
+  BOOST_TEST(QR::quad_mesh_quality(cube).flipped_quads == 0u);
+  BOOST_TEST(qr_test::flipped_over_quads(cube) == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(non_manifold_and_degenerate_soups)

@@ -79,6 +79,11 @@ struct Quad_mesh_quality
   double min_scaled_jacobian = 0.;       ///< minimum of the quads' scaled Jacobians (0 without quads)
   std::size_t non_positive_scaled_jacobian = 0; ///< quads with scaled Jacobian <= 0 (inverted, concave, bow-tie or collapsed)
   double non_positive_scaled_jacobian_fraction = 0.; ///< their share of the quads
+  /// quads flipped over in the surface: the normal of their diagonals is turned by more than 120 degrees from
+  /// that of every quad sharing an edge with them (consistently oriented quads with a normal; a quad with no
+  /// such neighbour does not count). Convex, such a quad has a positive scaled Jacobian, which is measured in
+  /// its own plane, but it is inverted for any use of the mesh.
+  std::size_t flipped_quads = 0;
   long euler_characteristic = 0;         ///< V - E + F
   std::size_t components = 0;            ///< faces connected through shared edges
   std::size_t boundary_loops = 0;        ///< connected components of the boundary edges
@@ -122,6 +127,7 @@ struct Quad_mesh_quality
     r["min_scaled_jacobian"] = min_scaled_jacobian;
     r["non_positive_scaled_jacobian"] = non_positive_scaled_jacobian;
     r["non_positive_scaled_jacobian_fraction"] = non_positive_scaled_jacobian_fraction;
+    r["flipped_quads"] = flipped_quads;
     r["euler_characteristic"] = euler_characteristic;
     r["components"] = components;
     r["boundary_loops"] = boundary_loops;
@@ -262,6 +268,7 @@ inline Quad_mesh_quality to_quality(const Soup_figures& s)
   q.min_scaled_jacobian = s.min_scaled_jacobian;
   q.non_positive_scaled_jacobian = s.non_positive_scaled_jacobian;
   q.non_positive_scaled_jacobian_fraction = s.quads > 0 ? double(s.non_positive_scaled_jacobian) / double(s.quads) : 0.;
+  q.flipped_quads = s.flipped_quads;
   q.euler_characteristic = s.euler_characteristic;
   q.components = s.components;
   q.boundary_loops = s.boundary_loops;

@@ -202,7 +202,7 @@ struct Soup_figures
   double angle_deviation = 0., max_angle_deviation = 0.;
   double mean_edge_length = 0., min_edge_length = 0., max_edge_length = 0., edge_length_deviation = 0.;
   double mean_scaled_jacobian = 0., min_scaled_jacobian = 0.;
-  std::size_t non_positive_scaled_jacobian = 0;
+  std::size_t non_positive_scaled_jacobian = 0, flipped_quads = 0;
   long euler_characteristic = 0;
   std::size_t components = 0, boundary_loops = 0;
 };
@@ -360,6 +360,36 @@ Soup_figures compute_soup_figures(const std::vector<Point_3>& pts, const Index_p
     double dev = 0.;
     for(double l : lengths) dev += std::abs(l - r.mean_edge_length);
     r.edge_length_deviation = r.mean_edge_length > 0. ? 100. * dev / double(edges.size()) / r.mean_edge_length : 0.;
+  }
+
+  // Quads flipped over: the normal of a quad's diagonals turned by more than 120 degrees from that of
+  // every quad across its edges (joined consistently). The scaled Jacobian cannot show it, being measured
+  // in the quad's own plane: a convex quad lying upside down in the surface scores as well as any.
+  {
+    typedef decltype(pts[0] - pts[0]) Vector_3;
+    auto diagonal_normal = [&](const std::vector<std::size_t>& f) {
+      return CGAL::cross_product(pts[f[2]] - pts[f[0]], pts[f[3]] - pts[f[1]]);
+    };
+    std::vector<std::size_t> neighbours(polygons.size(), 0), against(polygons.size(), 0);
+    for(std::size_t e = 0; e < edges.size(); ++e)
+    {
+      const Edge_uses u = edges.uses(e);
+      if(u.size() != 2 || u[0].forward == u[1].forward) continue;
+      const std::size_t f = u[0].face, g = u[1].face;
+      if(polygons[f].size() != 4 || polygons[g].size() != 4) continue;
+      const Vector_3 n = diagonal_normal(polygons[f]), m = diagonal_normal(polygons[g]);
+      const double nn = CGAL::to_double(n.squared_length()), mm = CGAL::to_double(m.squared_length());
+      if(!(nn > 0.) || !(mm > 0.)) continue; // (no direction to compare)
+      ++neighbours[f];
+      ++neighbours[g];
+      if(CGAL::to_double(n * m) < -0.5 * std::sqrt(nn * mm)) // cos(120 degrees)
+      {
+        ++against[f];
+        ++against[g];
+      }
+    }
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      if(neighbours[f] > 0 && against[f] == neighbours[f]) ++r.flipped_quads;
   }
 
   // quad shape
