@@ -11,6 +11,7 @@
 #include <CGAL/Quad_remeshing/Report.h>
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/quality/soup_figures.h>
+#include <CGAL/Quad_remeshing/internal/smoothing/closest_point_search.h>
 #include <CGAL/Quad_remeshing/internal/smoothing/quad_geometry.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -616,7 +617,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   auto face_under = [&](q_vertex v) {
     const Point_3& current = get(qvpm, v);
     if(get(last_face, v) == no_face || get(last_point, v) != current)
-      remember(v, current, tree.closest_point_and_primitive(current).second);
+      remember(v, current, internal::closest_point_and_primitive(tree, current).second);
     return get(last_face, v);
   };
   // the closest point to `p` on `candidates` (only on those on the own side of `v` if `own_only`), its
@@ -673,7 +674,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
     return true;
   };
   auto project_on_own_side = [&](q_vertex v, const Point_3& p) {
-    const auto closest = tree.closest_point_and_primitive(p);
+    const auto closest = internal::closest_point_and_primitive(tree, p);
     Point_3 on_sheet;
     if(get(has_home, v) && off_sheet_projection(v, p, closest.second, on_sheet)) return on_sheet;
     if(!get(has_home, v)) {
