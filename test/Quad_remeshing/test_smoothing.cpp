@@ -356,4 +356,40 @@ BOOST_AUTO_TEST_CASE(a_vertex_keeps_to_its_sheet_over_another_facing_the_same_wa
     BOOST_TEST(std::abs(q.point(v).z()) < 1e-12, "vertex at " << q.point(v) << " left the square's sheet");
 }
 
+// The smoothing's closest-point search gives what the tree's own query gives, point and face, ties
+// included: on fandisk's vertices (queries on the surface, where many faces tie), edge midpoints, and
+// points off the surface on both sides and far away.
+BOOST_AUTO_TEST_CASE(closest_point_search_matches_the_tree)
+{
+  Mesh t;
+  BOOST_TEST_REQUIRE(CGAL::IO::read_polygon_mesh(qr_test::data_file("fandisk.off"), t));
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh, CGAL::Default, CGAL::Tag_true, CGAL::Tag_true> Primitive;
+  typedef CGAL::AABB_traits<qr_test::Kernel, Primitive> Traits;
+  CGAL::AABB_tree<Traits> tree(faces(t).first, faces(t).second, t);
+  tree.accelerate_distance_queries();
+  std::vector<Point_3> queries;
+  CGAL::Random rng(7);
+  for(auto v : vertices(t)) queries.push_back(t.point(v));
+  for(auto e : edges(t))
+  {
+    const Point_3 m = CGAL::midpoint(t.point(source(e, t)), t.point(target(e, t)));
+    queries.push_back(m);
+    const Vector_3 n = PMP::compute_face_normal(face(halfedge(e, t), t), t);
+    const double off = rng.get_double(-0.05, 0.05);
+    queries.push_back(m + off * n);
+  }
+  for(int i = 0; i < 1000; ++i)
+    queries.emplace_back(rng.get_double(-3., 3.), rng.get_double(-3., 3.), rng.get_double(-3., 3.));
+  std::size_t same = 0;
+  for(const Point_3& p : queries)
+  {
+    const auto a = tree.closest_point_and_primitive(p);
+    const auto b = QR::internal::closest_point_and_primitive(tree, p);
+    if(a.first == b.first && a.second == b.second) ++same;
+    else BOOST_TEST_MESSAGE("query " << p << ": tree " << a.first << " on face " << a.second << ", search " << b.first << " on face " << b.second);
+  }
+  BOOST_TEST(same == queries.size());
+  BOOST_TEST(queries.size() > 20000u);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
