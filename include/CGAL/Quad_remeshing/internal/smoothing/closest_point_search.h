@@ -34,8 +34,8 @@ class Closest_point_search
   typedef typename AABBTraits::Point_and_primitive_id Point_and_primitive_id;
 
 public:
-  Closest_point_search(const Point_and_primitive_id& hint, const AABBTraits& traits)
-    : closest_(hint), traits_(traits)
+  Closest_point_search(const Point& query, const Point_and_primitive_id& hint, const AABBTraits& traits)
+    : closest_(hint), traits_(traits), squared_radius_(squared_distance(query, hint.first))
   {}
 
   constexpr bool go_further() const { return true; }
@@ -47,6 +47,7 @@ public:
     {
       closest_.first = p;
       closest_.second = primitive.id();
+      squared_radius_ = squared_distance(query, p);
     }
   }
 
@@ -61,15 +62,21 @@ public:
       if(x < b.min(i)) d += (b.min(i) - x) * (b.min(i) - x);
       else if(x > b.max(i)) d += (x - b.max(i)) * (x - b.max(i));
     }
-    const double r = CGAL::to_double(traits_.squared_distance_object()(query, closest_.first));
-    return d <= r * (1. + 1e-10);
+    return d <= squared_radius_ * (1. + 1e-10);
   }
 
   const Point_and_primitive_id& closest_point_and_primitive() const { return closest_; }
 
 private:
+  // (the ball's squared radius as CGAL's test computes it, kept rather than computed at every box)
+  double squared_distance(const Point& query, const Point& p) const
+  {
+    return CGAL::to_double(traits_.squared_distance_object()(query, p));
+  }
+
   Point_and_primitive_id closest_;
   const AABBTraits& traits_;
+  double squared_radius_;
 };
 
 // the closest point of the primitives of `tree` to `query` and its primitive, as
@@ -78,7 +85,7 @@ template <typename AABBTraits>
 typename AABBTraits::Point_and_primitive_id closest_point_and_primitive(const CGAL::AABB_tree<AABBTraits>& tree,
                                                                         const typename AABBTraits::Point_3& query)
 {
-  Closest_point_search<AABBTraits> search(tree.best_hint(query), tree.traits());
+  Closest_point_search<AABBTraits> search(query, tree.best_hint(query), tree.traits());
   tree.traversal(query, search);
   return search.closest_point_and_primitive();
 }
