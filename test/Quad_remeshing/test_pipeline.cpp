@@ -129,7 +129,8 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
 }
 
 // spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled
-// Jacobian -0.001) that no single vertex move could open; the relaxation of its region does.
+// Jacobian -0.001) that no single vertex move could open; the relaxation of its region does. And no quad
+// lies flipped over.
 BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
 {
   Mesh t, q;
@@ -141,6 +142,10 @@ BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
   BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
   BOOST_TEST(quality.min_scaled_jacobian > 0.);
   BOOST_TEST(r.find("smooth")->find("inverted_after")->number() == 0.);
+  // An inset of a later smoothing (the fidelity refinement's) left a thin quad flipped over among its
+  // neighbours, with a positive scaled Jacobian; the last step of the smoothing turns it back.
+  BOOST_TEST(quality.flipped_quads == 0u);
+  BOOST_TEST(qr_test::flipped_over_quads(q) == 0u);
 }
 
 // bunny with `layout_refinement`: the one invalid patch of its layout (a left turn beside a held crease's
