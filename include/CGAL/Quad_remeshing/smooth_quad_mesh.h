@@ -1265,14 +1265,13 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   auto is_flipped_over = [&](q_face f) {
     Vector_3 n, m;
     if(!diagonal_normal(f, n)) return false;
-    const double nn = CGAL::to_double(n.squared_length());
     std::size_t neighbours = 0, against = 0;
     for(q_halfedge h : halfedges_around_face(halfedge(f, qmesh), qmesh))
     {
       const q_halfedge o = opposite(h, qmesh);
       if(is_border(o, qmesh) || !diagonal_normal(face(o, qmesh), m)) continue;
       ++neighbours;
-      if(CGAL::to_double(n * m) < -0.5 * std::sqrt(nn * CGAL::to_double(m.squared_length()))) ++against;
+      if(internal::quality::normals_turned_over(n, m)) ++against;
     }
     return neighbours > 0 && against == neighbours;
   };

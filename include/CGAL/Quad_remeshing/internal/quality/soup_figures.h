@@ -110,6 +110,16 @@ struct Soup_edges
   }
 };
 
+// True when the normals `n` and `m` (not zero) are turned by more than 120 degrees from each other: a
+// quad whose normal is so turned from that of every quad across its edges lies flipped over in the
+// surface (Quad_mesh_quality::flipped_quads; smooth_quad_mesh() turns such quads back).
+template <typename Vector_3>
+bool normals_turned_over(const Vector_3& n, const Vector_3& m)
+{
+  const double nn = CGAL::to_double(n.squared_length()), mm = CGAL::to_double(m.squared_length());
+  return CGAL::to_double(n * m) < -0.5 * std::sqrt(nn * mm); // cos(120 degrees)
+}
+
 // True when every corner of the closed polygon `point(0)`, ..., `point(n - 1)` is flat: the cross product
 // of its two sides is at most `relative_tolerance` times the squared longest side (zero area).
 template <typename PointAt>
@@ -382,7 +392,7 @@ Soup_figures compute_soup_figures(const std::vector<Point_3>& pts, const Index_p
       if(!(nn > 0.) || !(mm > 0.)) continue; // (no direction to compare)
       ++neighbours[f];
       ++neighbours[g];
-      if(CGAL::to_double(n * m) < -0.5 * std::sqrt(nn * mm)) // cos(120 degrees)
+      if(normals_turned_over(n, m))
       {
         ++against[f];
         ++against[g];
