@@ -1077,12 +1077,14 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
   // scaled Jacobian of 1e-10 is a triangle in all but name, and no vertex move opens a flat corner
   // at a held vertex)
   const double mended_sj = 1e-3;
-  auto count_quads_to_mend = [&]() {
+  // the quads whose scaled Jacobian is at most `sj`
+  auto count_quads_at_most = [&](double sj) {
     std::size_t n = 0;
     for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= mended_sj) ++n;
+      if(quad_sj(f) <= sj) ++n;
     return n;
   };
+  auto count_quads_to_mend = [&]() { return count_quads_at_most(mended_sj); };
   auto is_quad = [&](q_face f) { return CGAL::halfedges_around_face(halfedge(f, qmesh), qmesh).size() == 4; };
   auto on_chord = get(CGAL::dynamic_edge_property_t<bool>(), qmesh);
   for(q_edge e : edges(qmesh)) put(on_chord, e, false);
@@ -1281,12 +1283,6 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       if(is_flipped_over(f)) flipped.push_back(f);
     return flipped;
   };
-  auto count_inverted = [&]() {
-    std::size_t n = 0;
-    for(q_face f : faces(qmesh))
-      if(quad_sj(f) <= 0.) ++n;
-    return n;
-  };
   // the untangling, then the relaxation of regions, among the quads around the vertices `seeds`
   auto untangle_around = [&](const std::vector<q_vertex>& seeds) {
     std::vector<q_face> near;
@@ -1394,7 +1390,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       put(has_orientation, f, l > 0.);
       if(l > 0.) put(orientation, f, sum / l);
     }
-    std::size_t flipped_now = flipped.size(), inverted_now = count_inverted();
+    std::size_t flipped_now = flipped.size(), inverted_now = count_quads_at_most(0.);
     // one try per quad flipped over (unless an earlier try mended it), kept or undone on its own
     for(q_face f : flipped)
     {
@@ -1405,7 +1401,7 @@ Quad_smoothing_statistics smooth_quad_mesh(QuadMesh& qmesh,
       std::vector<q_vertex> seeds;
       for(q_vertex v : vertices_around_face(halfedge(f, qmesh), qmesh)) seeds.push_back(v);
       untangle_around(seeds);
-      const std::size_t flipped_after = flipped_over_quads().size(), inverted_after = count_inverted();
+      const std::size_t flipped_after = flipped_over_quads().size(), inverted_after = count_quads_at_most(0.);
       if(flipped_after < flipped_now && inverted_after <= inverted_now)
       {
         stats.mended_flipped_quads += flipped_now - flipped_after;
