@@ -16,15 +16,18 @@ namespace Quad_remeshing {
 namespace internal {
 
 /*
-  Traversal traits of an AABB tree for the closest primitive to a query point. They visit the primitives
-  that CGAL's own projection traits visit, in the same order, and keep the closest point the same way, so
-  the answer is the same, ties included. Only the box test differs: CGAL asks an exact predicate whether
-  the box meets the ball around the query through the closest point so far (a sixth of truck's whole run,
-  where the smoothing queries the tree a few million times, with an exact fallback whenever the query lies
-  on the surface); here the squared distance to the box is computed in doubles and compared with the ball's
-  squared radius enlarged by 1e-10 of itself, which admits every box the exact test admits. A box it
-  admits beyond those is farther than the ball, so its primitives are farther than the closest point and
-  change nothing (the comparison of their points is exact).
+  Traversal traits of an AABB tree for the closest primitive to a query point. They walk the tree in the
+  order of CGAL's own projection traits and keep the closest point the same way, so the answer is the same,
+  ties included. Two tests differ:
+  - CGAL asks an exact predicate whether a box meets the ball around the query through the closest point
+    so far (a sixth of truck's whole run, where the smoothing queries the tree a few million times, with an
+    exact fallback whenever the query lies on the surface). Here the squared distance to the box is computed
+    in doubles and compared with the ball's squared radius enlarged by 1e-10 of itself, which admits every
+    box the exact test admits. A box admitted beyond those is farther than the ball, so its primitives are
+    farther than the closest point and change nothing (the comparison of their points is exact).
+  - CGAL projects the query onto both primitives of a pair of leaves. Here a primitive is projected only if
+    its own box passes the same test; one that fails is farther than the closest point, so skipping it
+    changes nothing.
 */
 template <typename AABBTraits>
 class Closest_point_search
@@ -42,6 +45,10 @@ public:
 
   void intersection(const Point& query, const Primitive& primitive)
   {
+    // The projection onto the triangle is the costliest step of the search, and the tree's leaves come in
+    // pairs whose boxes it does not test: a triangle whose box is outside the ball cannot be closer.
+    if(!within_ball(query, CGAL::internal::Primitive_helper<AABBTraits>::get_datum(primitive, traits_).bbox()))
+      return;
     const Point p = traits_.closest_point_object()(query, primitive, closest_.first);
     if(!traits_.equal_3_object()(p, closest_.first))
     {
@@ -54,7 +61,14 @@ public:
   template <typename Node>
   bool do_intersect(const Point& query, const Node& node) const
   {
-    const CGAL::Bbox_3& b = node.bbox();
+    return within_ball(query, node.bbox());
+  }
+
+  const Point_and_primitive_id& closest_point_and_primitive() const { return closest_; }
+
+private:
+  bool within_ball(const Point& query, const CGAL::Bbox_3& b) const
+  {
     double d = 0.;
     for(int i = 0; i < 3; ++i)
     {
@@ -65,9 +79,6 @@ public:
     return d <= squared_radius_ * (1. + 1e-10);
   }
 
-  const Point_and_primitive_id& closest_point_and_primitive() const { return closest_; }
-
-private:
   // (the ball's squared radius as CGAL's test computes it, kept rather than computed at every box)
   double squared_distance(const Point& query, const Point& p) const
   {
