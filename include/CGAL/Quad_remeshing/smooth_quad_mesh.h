@@ -327,10 +327,10 @@ void collect_garbage_of(Mesh&) {}
   more have a scaled Jacobian <= 0. Where they do not, the quad is inset as above (its inner quad and
   the four around it take its orientation), which gives the untangling four free vertices to lay the
   fold out with, and the untangling runs again, under the same rule; otherwise the inset is undone.
-  A quad that a kept try turned over in passing gets its own try. When no quad is flipped over, this
-  step changes nothing. On spot it mends the one flipped quad of the output; on truck 3 more of the
-  outputs' flipped quads than the untangling alone (7 left instead of 10: the others lie among thin
-  sharp features, where each try that turns one back inverts another quad).
+  A quad that a kept inset's untangling turned over in passing gets its own try. When no quad is
+  flipped over, this step changes nothing. On spot it mends the one flipped quad of the output; on
+  truck 3 more of the output's flipped quads than the untangling alone (7 left instead of 10; the tries
+  on the others do not leave fewer quads flipped over with no more inverted, and are undone).
 
   @tparam QuadMesh a model of `MutableFaceGraph`; faces that are not quads are kept but not fitted
   @tparam TriangleMesh a model of `FaceListGraph` (triangles)
