@@ -133,7 +133,8 @@ void read_and_remesh(const std::string& path, double quad_edge_length, bool verb
   p.quad_edge_length = quad_edge_length > 0. ? quad_edge_length : QR::default_quad_edge_length(p.tm);
   const auto remeshing = QR::remesh_for_quadrangulation(
     p.tm, p.feature, QRP::combine(QRP::quad_edge_length(p.quad_edge_length).verbose(verbose),
-                                  QRP::vertex_is_feature_corner_map(p.corner), QRP::adaptive_remeshing(adaptive)));
+                                  QRP::vertex_is_feature_corner_map(p.corner), QRP::adaptive_remeshing(adaptive),
+                                  QRP::far_region_rounds(0u))); // (as quad_remesh() and the command line by default)
   if(adaptive) p.figures["distance_after"] = remeshing.distance_after;
   p.tm.collect_garbage(); // the later stages index elements densely
   p.figures["faces"] = p.tm.number_of_faces();

@@ -77,7 +77,7 @@ const char* usage_text =
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
   "                   [--html FILE.html] [--adaptive-remeshing] [--no-hold-sharp-edges]\n"
-  "                   [--refine-layout]\n"
+  "                   [--refine-layout] [--refine-far-regions]\n"
   "                   [--verbose | --quiet] [--help]\n"
   "\n"
   "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
@@ -128,6 +128,10 @@ const char* usage_text =
   "                       and the summary say what they gave up); the output then depends on the\n"
   "                       machine's speed and load\n"
   "  --adaptive-remeshing run the adaptive remeshing pass (experimental)\n"
+  "  --refine-far-regions remesh again, at half and then a quarter of the length, the regions that\n"
+  "                       the remeshing leaves farther than 70% of 0.002 times the diagonal from the\n"
+  "                       input (thin tips, tight bends) (experimental: the output gets closer to the\n"
+  "                       input on some meshes, farther on others)\n"
   "  --refine-layout      refine the triangles where a layout patch stays non-convex for want of a\n"
   "                       vertex, and cut those patches again (experimental)\n"
   "  --no-hold-sharp-edges let the uniform remeshing pass smooth away the sharp edges that are not\n"
@@ -154,7 +158,8 @@ struct Options
          component_resolution = QR::internal::default_component_resolution;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
-  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true, refine_layout = false;
+  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true, refine_layout = false,
+       refine_far_regions = false;
 
   // the sizing tolerance in use: as given, else 0 with --faces (a count of quads asks for the uniform
   // size that gives it), else the library's default
@@ -232,6 +237,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
     else if(a == "--refine-layout") o.refine_layout = true;
+    else if(a == "--refine-far-regions") o.refine_far_regions = true;
     else if(a == "--no-hold-sharp-edges") o.hold_sharp_edges = false;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option '" + a + "'");
@@ -435,7 +441,8 @@ private:
                    QRP::adaptive_remeshing(opt_.adaptive_remeshing), QRP::hold_sharp_edges(opt_.hold_sharp_edges),
                    QRP::component_resolution(opt_.component_resolution),
                    QRP::feature_angle(opt_.feature_angle),
-                   QRP::vertex_is_feature_corner_map(state_.corner)));
+                   QRP::vertex_is_feature_corner_map(state_.corner),
+                   QRP::far_region_rounds(opt_.refine_far_regions ? 2u : 0u)));
     // later stages index elements densely: drop the removed ones (property maps are compacted with them)
     state_.tmesh.collect_garbage();
     dump_mesh("3_remesh.off", state_.tmesh);

@@ -32,6 +32,12 @@ qr_cli_test(refine_layout_bunny 0 ARGS ${QR_MESHES}/bunny.off -o ${QR_CLI_OUT}/b
             --report ${QR_CLI_OUT}/bunny_refined_layout.json
             FILE ${QR_CLI_OUT}/bunny_refined_layout.json
             FILE_MATCHES "\"refinement\": {[^}]*\"invalid_before\": 1,[^}]*\"split_edges\": [1-9][0-9]*,[^}]*\"invalid_after\": 0")
+# --refine-far-regions: elephant's tusks and toes, cut off by the uniform remeshing (0.72% of the diagonal),
+# are remeshed finer, within 0.2%, in one or two rounds
+qr_cli_test(refine_far_regions_elephant 0 ARGS ${QR_MESHES}/elephant.off -o ${QR_CLI_OUT}/elephant_far_regions.off --until remesh
+            --refine-far-regions --quiet --report ${QR_CLI_OUT}/elephant_far_regions.json
+            FILE ${QR_CLI_OUT}/elephant_far_regions.json
+            FILE_MATCHES "\"distance_uniform\": 0\\.00[3-9][0-9]*,[^}]*\"distance_refined\": 0\\.001[0-9]*,[^}]*\"far_region_rounds\": [12],")
 qr_cli_test(no_input 2 ARGS OUTPUT_MATCHES "no input file")
 qr_cli_test(unknown_option 2 ARGS ${QR_MESHES}/fandisk.off --bogus OUTPUT_MATCHES "unknown option")
 qr_cli_test(bad_stage 2 ARGS ${QR_MESHES}/fandisk.off --until nowhere OUTPUT_MATCHES "unknown stage")

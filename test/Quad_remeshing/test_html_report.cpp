@@ -195,9 +195,10 @@ struct Fandisk_layout
     auto feature = tm.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
     auto corner = tm.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
     QR::detect_feature_edges(tm, feature, QR::parameters::vertex_is_feature_corner_map(corner));
-    QR::remesh_for_quadrangulation(tm, feature,
+    QR::remesh_for_quadrangulation(tm, feature, // (as quad_remesh() by default)
                                    QR::parameters::combine(QR::parameters::quad_edge_length(QR::quad_edge_length_from_scale(tm, 1.)),
-                                                           QR::parameters::vertex_is_feature_corner_map(corner)));
+                                                           QR::parameters::vertex_is_feature_corner_map(corner),
+                                                           QR::parameters::far_region_rounds(0u)));
     tm.collect_garbage();
     field = tm.add_property_map<Mesh::Face_index, qr_test::Kernel::Vector_3>("f:field", CGAL::NULL_VECTOR).first;
     singularity = tm.add_property_map<Mesh::Vertex_index, int>("v:singularity", 0).first;

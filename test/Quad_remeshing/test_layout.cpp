@@ -808,8 +808,10 @@ struct Traced_for_refinement
     feature = m.add_property_map<E, bool>("e:feature", false).first;
     auto corner = m.add_property_map<V, bool>("v:corner", false).first;
     QR::detect_feature_edges(m, feature, QR::parameters::vertex_is_feature_corner_map(corner));
+    // (without the far-region refinement, as quad_remesh() by default)
     QR::remesh_for_quadrangulation(m, feature, QR::parameters::combine(QR::parameters::quad_edge_length(QR::default_quad_edge_length(m)),
-                                                                       QR::parameters::vertex_is_feature_corner_map(corner)));
+                                                                       QR::parameters::vertex_is_feature_corner_map(corner),
+                                                                       QR::parameters::far_region_rounds(0u)));
     m.collect_garbage();
     field = m.add_property_map<F, Vector_3>("f:cross_field", Vector_3(0, 0, 0)).first;
     singularity = m.add_property_map<V, int>("v:singularity", 0).first;
