@@ -163,10 +163,11 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
                             again at a quarter, then an eighth, of the quad edge length. Off by default here (the
                             stage's own default is 2): the triangles get closer to the input (elephant 0.72% ->
                             0.19% of the diagonal), but the later stages react to the finer triangles in ways that
-                            do not follow that distance. On the 22 development meshes (qmeval) it brought 8
+                            do not follow that distance. On the 22 development meshes (qmeval) it brought 7
                             outputs closer to the input (face 0.52% -> 0.35%, fertility 0.46% -> 0.35%, elephant
-                            0.48% -> 0.43%) and 8 farther (featuretype 0.39% -> 0.61%, truck 0.46% -> 0.58% with 3
-                            inverted quads, camelhead 0.46% -> 0.54%), for 7% more quads at the median}
+                            0.48% -> 0.40%) and 9 farther (truck 0.46% -> 0.68% with an inverted quad, featuretype
+                            0.39% -> 0.56%, camelhead 0.46% -> 0.54%), chair_doublesided's mean scaled Jacobian fell
+                            from 0.92 to 0.64, and the median quad count rose 7%}
       \cgalParamType{`unsigned`}
       \cgalParamDefault{`0`}
     \cgalParamNEnd

@@ -14,7 +14,6 @@
 #include <CGAL/Quad_remeshing/internal/features/feature_graph.h>
 #include <CGAL/Quad_remeshing/internal/remeshing/adaptive_remeshing.h>
 #include <CGAL/Quad_remeshing/internal/remeshing/remeshing_helpers.h>
-#include <CGAL/Quad_remeshing/internal/remeshing/refine_far_regions.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -225,6 +224,9 @@ double quad_edge_length_from_scale(const TriangleMesh& tmesh, double scale,
 namespace internal {
 
 constexpr double default_remeshing_tolerance = 0.002; // remesh_for_quadrangulation()'s `remeshing_tolerance`
+// after the uniform pass, the faces around a vertex farther than this share of `remeshing_tolerance` from
+// the input are remeshed again (the rest is a margin for the points between the samples)
+constexpr double far_region_share = 0.7;
 
 // The uniform pass's first split pass cuts every edge longer than 4/3 of the target, so a triangle with a
 // long edge `l` ends as up to about (l / target)^2 triangles, while the result has about
@@ -400,11 +402,11 @@ void adaptive_pass(TriangleMesh& tmesh, VPM vpm, EFM efm, VCM vcm, SizeMap size,
   `isotropic_remeshing()` at `L / 4` (the features and held vertices as in pass 1), projecting onto the
   input; then, if the largest distance fell, once more at `L / 8`. The components remeshed at a shorter
   length of their own are left out. Measured with qmeval on the 22 development meshes (`--until remesh`,
-  symmetric Hausdorff distance): 17 within 0.2% of the diagonal instead of 9 (elephant 0.72% -> 0.19%,
-  face 0.50% -> 0.14%, bunny 0.40% -> 0.18%, rocker_arm 0.36% -> 0.17%), for up to twice the faces
-  (rocker_arm 12.8k -> 25.2k); still above: camelhead 0.81% -> 0.59%, featuretype 0.51% -> 0.43%, truck
-  0.62% -> 0.32%, and teapot (0.48%) and chair_doublesided (0.38%, thin double-sided struts), which the
-  finer mesh does not bring closer.
+  symmetric Hausdorff distance): 18 within 0.2% of the diagonal instead of 9 (elephant 0.72% -> 0.19%,
+  face 0.50% -> 0.14%, featuretype 0.51% -> 0.20%, bunny 0.40% -> 0.18%, rocker_arm 0.36% -> 0.17%), for up
+  to twice the faces (rocker_arm 12.8k -> 25.2k); still above: camelhead 0.81% -> 0.59%, truck 0.62% ->
+  0.32%, and teapot (0.48%) and chair_doublesided (0.38%, thin double-sided struts), which the finer mesh
+  does not bring closer. The distances are measured as in the adaptive pass (`measure_distances()`).
 
   Pass 2 (`adaptive_remeshing`, off by default, see below) is the package's own loop of edge splits, edge collapses,
   edge flips, tangential relaxation and projection onto the input, driven by a target edge length per
@@ -693,7 +695,7 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
                                                 get(vpm, target(halfedge(e, tmesh), tmesh)));
   // (the adaptive pass appends the held edges to them)
   const std::size_t input_feature_segments = reference.feature_segments.size();
-  if(adaptive)
+  if(adaptive || refine_rounds > 0) // (the distances from the input are measured at them)
   {
     reference.points.reserve(st.vertices_before);
     for(vertex_descriptor v : vertices(tmesh)) reference.points.push_back(get(vpm, v));
@@ -874,13 +876,6 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     for(vertex_descriptor v : bends) put(fixed, v, true);
     st.bend_vertices_held = bends.size();
   }
-  // the input vertices, where the far regions are looked for after the uniform pass
-  std::vector<typename GT::Point_3> input_points;
-  if(refine_rounds > 0)
-  {
-    input_points.reserve(st.vertices_before);
-    for(vertex_descriptor v : vertices(tmesh)) input_points.push_back(get(vpm, v));
-  }
   if(hold_sharp) // (always with the adaptive pass)
     uniform_pass(constrained, fixed);
   else
@@ -904,17 +899,19 @@ Remeshing_statistics remesh_for_quadrangulation(TriangleMesh& tmesh, EdgeIsFeatu
     double length = st.target_edge_length, previous_largest = 0.;
     for(unsigned round = 0;; ++round)
     {
-      double largest = 0.;
-      std::vector<face_descriptor> far = internal::far_faces(
-        tmesh, vpm, reference.surface, input_points, internal::far_region_share * tolerance * diagonal, largest);
-      { // not the components remeshed at a shorter length of their own
-        std::vector<face_descriptor> large = group_faces().large;
-        std::sort(large.begin(), large.end());
-        far.erase(std::remove_if(far.begin(), far.end(),
-                                 [&](face_descriptor f) { return !std::binary_search(large.begin(), large.end(), f); }),
-                  far.end());
-      }
-      largest /= diagonal;
+      // the faces around the vertices where the distance measured on their faces (either way) is too large,
+      // but not those of the components remeshed at a shorter length of their own
+      auto error = get(CGAL::dynamic_vertex_property_t<double>(), tmesh);
+      const double largest = internal::measure_distances(tmesh, vpm, reference, error) / diagonal;
+      std::vector<face_descriptor> far;
+      for(face_descriptor f : group_faces().large)
+        for(vertex_descriptor v : vertices_around_face(halfedge(f, tmesh), tmesh))
+          if(get(error, v) > internal::far_region_share * tolerance * diagonal)
+          {
+            far.push_back(f);
+            break;
+          }
+      std::sort(far.begin(), far.end());
       if(round == 0) st.distance_uniform = largest;
       else st.distance_refined = largest;
       if(verbose)
