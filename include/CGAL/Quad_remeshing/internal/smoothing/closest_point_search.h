@@ -11,6 +11,8 @@
 #include <CGAL/Bbox_3.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
+
 namespace CGAL {
 namespace Quad_remeshing {
 namespace internal {
@@ -37,9 +39,14 @@ class Closest_point_search
   typedef typename AABBTraits::Point_and_primitive_id Point_and_primitive_id;
 
 public:
-  Closest_point_search(const Point& query, const Point_and_primitive_id& hint, const AABBTraits& traits)
+  // `bound`: if not negative, a squared distance from `query` to a point of the primitives (the search
+  // then tests only the boxes within it; the answer does not change, see closest_point_and_primitive())
+  Closest_point_search(const Point& query, const Point_and_primitive_id& hint, const AABBTraits& traits,
+                       double bound = -1.)
     : closest_(hint), traits_(traits), squared_radius_(squared_distance(query, hint.first))
-  {}
+  {
+    if(bound >= 0.) squared_radius_ = (std::min)(squared_radius_, bound);
+  }
 
   constexpr bool go_further() const { return true; }
 
@@ -54,7 +61,7 @@ public:
     {
       closest_.first = p;
       closest_.second = primitive.id();
-      squared_radius_ = squared_distance(query, p);
+      squared_radius_ = (std::min)(squared_radius_, squared_distance(query, p));
     }
   }
 
@@ -97,6 +104,26 @@ typename AABBTraits::Point_and_primitive_id closest_point_and_primitive(const CG
                                                                         const typename AABBTraits::Point_3& query)
 {
   Closest_point_search<AABBTraits> search(query, tree.best_hint(query), tree.traits());
+  tree.traversal(query, search);
+  return search.closest_point_and_primitive();
+}
+
+/*
+  The same, knowing `bound`, the squared distance from `query` to some point of the primitives (a point
+  on the face where the query was last time): only the boxes within it are tested, and only their
+  primitives projected, which is most of the saving when `query` moved little. The answer is the same
+  as without the bound, ties included. The search starts from the same hint; a primitive farther than
+  the bound is farther than the closest point, so it is never the answer; the primitives as close as
+  the closest point are all within the bound and are visited in the same order, so the first of them
+  (or the hint, if its point is the closest) is still the one kept. A primitive whose box is within the
+  bound but whose point is not can still replace the hint for a while, as it would have without it.
+*/
+template <typename AABBTraits>
+typename AABBTraits::Point_and_primitive_id closest_point_and_primitive(const CGAL::AABB_tree<AABBTraits>& tree,
+                                                                        const typename AABBTraits::Point_3& query,
+                                                                        double bound)
+{
+  Closest_point_search<AABBTraits> search(query, tree.best_hint(query), tree.traits(), bound);
   tree.traversal(query, search);
   return search.closest_point_and_primitive();
 }
