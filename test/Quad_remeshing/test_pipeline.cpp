@@ -2,6 +2,8 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <CGAL/Quad_remeshing/IO.h>
 #include <CGAL/Quad_remeshing/quad_mesh_quality.h>
 #include <CGAL/Quad_remeshing/quad_remesh.h>
@@ -24,6 +26,53 @@ QR::Feature_fidelity fidelity_to_input(const Mesh& t, const Mesh& q)
   auto features = get(CGAL::dynamic_edge_property_t<bool>(), t);
   QR::detect_evaluation_feature_edges(t, features);
   return QR::feature_fidelity(t, features, q);
+}
+
+// The input of the tip tests: a grid of spacing 0.5 on [0, n]^2, each square split along one diagonal,
+// the height of grid vertex (i, j) given by `height(i, j)`.
+template <typename Height>
+Mesh plane_with_spikes(int n, const Height& height)
+{
+  Mesh input;
+  std::vector<Mesh::Vertex_index> iv;
+  for(int j = 0; j <= 2 * n; ++j)
+    for(int i = 0; i <= 2 * n; ++i) iv.push_back(input.add_vertex(qr_test::Point_3(0.5 * i, 0.5 * j, height(i, j))));
+  auto at = [&](int i, int j) { return iv[std::size_t(j * (2 * n + 1) + i)]; };
+  for(int j = 0; j < 2 * n; ++j)
+    for(int i = 0; i < 2 * n; ++i) {
+      input.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      input.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return input;
+}
+
+// Puts the quads onto the tips of `input` (tolerance 0.1, 10 smoothing iterations), calling
+// `before(m, held)` before each smoothing; the quads kept go to `result`.
+template <typename InputFeature, typename QuadFeature, typename Before>
+QR::internal::Tip_snapping_statistics snap_tips(const Mesh& input, const InputFeature& input_feature, const Mesh& quads,
+                                                const QuadFeature& qfeature, const Before& before, Mesh& result)
+{
+  auto smooth = [&](Mesh& m, const auto& m_feature, const auto& held) {
+    before(m, held);
+    QR::smooth_quad_mesh(m, input, input_feature, CGAL::parameters::edge_is_constrained_map(m_feature)
+                                                    .vertex_is_constrained_map(held).number_of_iterations(10));
+  };
+  auto keep = [&](Mesh& m, const auto&) { result = m; };
+  return QR::internal::snap_quads_to_input_tips(input, quads, qfeature, 0.1, smooth, keep, false);
+}
+
+// n x n unit quads on the plane z = 0, the grid vertex (i, j) at `place(i, j)`
+template <typename Place>
+Mesh quad_grid(int n, const Place& place)
+{
+  Mesh quads;
+  std::vector<Mesh::Vertex_index> qv;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) qv.push_back(quads.add_vertex(place(i, j)));
+  auto at = [&](int i, int j) { return qv[std::size_t(j * (n + 1) + i)]; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) quads.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  return quads;
 }
 }
 
@@ -333,41 +382,18 @@ BOOST_AUTO_TEST_CASE(isolated_vertex_is_not_a_tip)
 BOOST_AUTO_TEST_CASE(tips_left_by_a_round_get_the_next)
 {
   typedef qr_test::Point_3 P;
-  Mesh input, quads;
-  // the input: a grid of spacing 0.5 on [0,8]^2, split along one diagonal, the two spikes raised
-  std::vector<Mesh::Vertex_index> iv;
-  for(int j = 0; j <= 16; ++j)
-    for(int i = 0; i <= 16; ++i)
-      iv.push_back(input.add_vertex(P(0.5 * i, 0.5 * j, i == 8 && j == 8 ? 1. : (i == 9 && j == 8 ? 0.9 : 0.))));
-  auto at = [&](int i, int j) { return iv[std::size_t(j * 17 + i)]; };
-  for(int j = 0; j < 16; ++j)
-    for(int i = 0; i < 16; ++i) {
-      input.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      input.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
+  // the input on [0,8]^2 with the two spikes raised; the quads: 8 x 8 unit squares on the plane
+  const Mesh input = plane_with_spikes(8, [](int i, int j) { return i == 8 && j == 8 ? 1. : (i == 9 && j == 8 ? 0.9 : 0.); });
   auto input_feature = get(CGAL::dynamic_edge_property_t<bool>(), input);
   for(auto e : input.edges()) put(input_feature, e, input.is_border(e));
-  // the quads: 8 x 8 unit squares on the plane
-  std::vector<Mesh::Vertex_index> qv;
-  for(int j = 0; j <= 8; ++j)
-    for(int i = 0; i <= 8; ++i) qv.push_back(quads.add_vertex(P(i, j, 0.)));
-  for(int j = 0; j < 8; ++j)
-    for(int i = 0; i < 8; ++i)
-      quads.add_face(qv[std::size_t(j * 9 + i)], qv[std::size_t(j * 9 + i + 1)], qv[std::size_t((j + 1) * 9 + i + 1)],
-                     qv[std::size_t((j + 1) * 9 + i)]);
+  Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, 0.); });
   auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), quads);
   for(auto e : quads.edges()) put(qfeature, e, quads.is_border(e));
 
   std::size_t smoothings = 0;
-  auto smooth = [&](Mesh& m, const auto& m_feature, const auto& held) {
-    ++smoothings;
-    QR::smooth_quad_mesh(m, input, input_feature, CGAL::parameters::edge_is_constrained_map(m_feature)
-                                                    .vertex_is_constrained_map(held).number_of_iterations(10));
-  };
   Mesh result;
-  auto keep = [&](Mesh& m, const auto&) { result = m; };
   const QR::internal::Tip_snapping_statistics st =
-    QR::internal::snap_quads_to_input_tips(input, quads, qfeature, 0.1, smooth, keep, false);
+    snap_tips(input, input_feature, quads, qfeature, [&](const Mesh&, const auto&) { ++smoothings; }, result);
   BOOST_TEST(st.kept);
   BOOST_TEST(st.rounds >= 2u);
   BOOST_TEST(st.distance_before == 1., boost::test_tools::tolerance(1e-9));
@@ -379,6 +405,63 @@ BOOST_AUTO_TEST_CASE(tips_left_by_a_round_get_the_next)
   };
   BOOST_TEST(has_vertex_at(P(4., 4., 1.))); // A, taken in the first round and held since
   BOOST_TEST(result.number_of_faces() == quads.number_of_faces());
+}
+
+// A spike in the middle of a plane that a 16 x 16 grid of unit quads cuts off, the grid's inner vertices
+// jittered (so that smoothing them would move them). A round of tips smooths only the quads within
+// tip_smoothing_rings rings of its tips, every other vertex held (all the quads were smoothed again before,
+// and truck, with --refine-layout, got an inverted quad a unit away from its tips, which made the round
+// fail); after the last round kept, all the quads are smoothed once more with the tips held.
+BOOST_AUTO_TEST_CASE(tips_smooth_the_quads_around_them)
+{
+  typedef qr_test::Point_3 P;
+  const Mesh input = plane_with_spikes(16, [](int i, int j) { return i == 16 && j == 16 ? 1. : 0.; });
+  auto input_feature = get(CGAL::dynamic_edge_property_t<bool>(), input);
+  for(auto e : input.edges()) put(input_feature, e, input.is_border(e));
+  std::vector<std::pair<P, int>> jittered; // the inner vertices and their grid distance from the spike
+  Mesh quads = quad_grid(16, [&](int i, int j) {
+    const bool inner = i > 0 && i < 16 && j > 0 && j < 16;
+    const P p(i + (inner ? 0.05 * ((i * 7 + j * 3) % 5 - 2) : 0.), j + (inner ? 0.05 * ((i * 3 + j * 5) % 5 - 2) : 0.), 0.);
+    if(inner) jittered.emplace_back(p, std::abs(i - 8) + std::abs(j - 8));
+    return p;
+  });
+  auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), quads);
+  for(auto e : quads.edges()) put(qfeature, e, quads.is_border(e));
+  // the grid distance from the spike of each vertex left free by each smoothing
+  std::vector<std::vector<int>> free_distances;
+  auto record = [&](const Mesh& m, const auto& held) {
+    std::vector<int> d;
+    for(auto v : m.vertices())
+      if(!get(held, v))
+        d.push_back(int(std::abs(std::lround(m.point(v).x()) - 8) + std::abs(std::lround(m.point(v).y()) - 8)));
+    free_distances.push_back(d);
+  };
+  Mesh result;
+  const QR::internal::Tip_snapping_statistics st = snap_tips(input, input_feature, quads, qfeature, record, result);
+  BOOST_TEST(st.kept);
+  BOOST_TEST(st.distance_after < st.distance_before);
+  auto has_vertex_at = [&](const P& p) {
+    for(auto v : result.vertices()) if(CGAL::squared_distance(result.point(v), p) < 1e-18) return true;
+    return false;
+  };
+  BOOST_TEST(has_vertex_at(P(8., 8., 1.))); // the spike
+  // the rounds: only vertices near the spike are free (the tips of later rounds are within two quad
+  // edges of the spike's vertex); the last smoothing: all but the tips
+  BOOST_REQUIRE(free_distances.size() >= 2u);
+  const int near_rings = int(QR::internal::tip_smoothing_rings) + 2;
+  for(std::size_t k = 0; k + 1 < free_distances.size(); ++k)
+  {
+    BOOST_TEST(free_distances[k].size() > 10u);
+    BOOST_TEST(*std::max_element(free_distances[k].begin(), free_distances[k].end()) <= near_rings + 1);
+  }
+  BOOST_TEST(free_distances.back().size() + 8u >= quads.number_of_vertices());
+  // unless that last smoothing was kept, the vertices far from the spike are where they were
+  std::size_t far = 0, kept_far = 0;
+  for(const auto& pd : jittered)
+    if(pd.second > near_rings) { ++far; if(has_vertex_at(pd.first)) ++kept_far; }
+  BOOST_TEST(far > 50u);
+  if(!st.smoothed_all) BOOST_TEST(kept_far == far);
+  else BOOST_TEST(kept_far < far);
 }
 
 // xyz_cube_20mm without feature lines: one arc of the layout has a minimum edge count far above its
