@@ -175,10 +175,11 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
       \cgalParamDescription{whether `refine_patch_layout()` runs after `trace_patch_layout()`: the triangle mesh
                             gets a vertex where a cut across a thin wedge needs one, and the patches that stay
                             non-convex for want of it are cut. Off by default: it lowers the number of invalid
-                            patches (54 -> 24 on the 22 development meshes) and raises truck's mean scaled
-                            Jacobian from 0.75 to 0.79, but the quantization then lands elsewhere on elephant
-                            and camelhead, whose outputs go from 0.46% and 0.43% to 0.55% and 0.52% of the
-                            diagonal from the input (qmeval)}
+                            patches (54 -> 24 on the 22 development meshes), raises truck's mean scaled
+                            Jacobian from 0.78 to 0.81 and leaves no quad flipped over (truck has 6 without
+                            it), but the quantization then lands elsewhere on elephant, whose output goes
+                            from 0.47% to 0.56% of the diagonal from the input (qmeval; camelhead 0.44% ->
+                            0.50%)}
       \cgalParamType{Boolean}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
