@@ -191,18 +191,25 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   // a round first takes tips one mean quad edge length apart; if that is not closer, two
   unsigned round = 0;
   bool sparse = false;
-  while(round < max_tip_rounds && !far.empty())
-  {
+  // a copy of the last quads kept (at first `qmesh`), its vertices on the tips kept so far held
+  auto start_attempt = [&]() {
     auto attempt = std::make_unique<Round_mesh>();
     QuadMesh& copy = attempt->mesh;
     attempt->feature.emplace(get(CGAL::dynamic_edge_property_t<bool>(), copy));
     attempt->fixed.emplace(get(CGAL::dynamic_vertex_property_t<bool>(), copy));
+    if(best) copy_quad_mesh(best->mesh, *best->feature, copy, *attempt->feature);
+    else copy_quad_mesh(qmesh, qfeature, copy, *attempt->feature);
+    auto cvpm = get(CGAL::vertex_point, copy);
+    for(qvertex v : vertices(copy)) put(*attempt->fixed, v, held.count(get(cvpm, v)) > 0);
+    return attempt;
+  };
+  while(round < max_tip_rounds && !far.empty())
+  {
+    std::unique_ptr<Round_mesh> attempt = start_attempt();
+    QuadMesh& copy = attempt->mesh;
     const Edge_flags& copy_feature = *attempt->feature;
     const Vertex_flags& fixed = *attempt->fixed;
-    if(best) copy_quad_mesh(best->mesh, *best->feature, copy, copy_feature);
-    else copy_quad_mesh(qmesh, qfeature, copy, copy_feature);
     auto cvpm = get(CGAL::vertex_point, copy);
-    for(qvertex v : vertices(copy)) put(fixed, v, held.count(get(cvpm, v)) > 0); // held vertices do not move
 
     // the quad vertices that may move onto a tip, with their normals
     double length = 0.;
@@ -311,13 +318,8 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   // 0.01%).
   if(best)
   {
-    auto attempt = std::make_unique<Round_mesh>();
+    std::unique_ptr<Round_mesh> attempt = start_attempt();
     QuadMesh& copy = attempt->mesh;
-    attempt->feature.emplace(get(CGAL::dynamic_edge_property_t<bool>(), copy));
-    attempt->fixed.emplace(get(CGAL::dynamic_vertex_property_t<bool>(), copy));
-    copy_quad_mesh(best->mesh, *best->feature, copy, *attempt->feature);
-    auto cvpm = get(CGAL::vertex_point, copy);
-    for(qvertex v : vertices(copy)) put(*attempt->fixed, v, held.count(get(cvpm, v)) > 0);
     smooth(copy, *attempt->feature, *attempt->fixed);
     const double after = measure(copy, nullptr);
     const std::size_t inverted_after = quad_mesh_quality(copy).non_positive_scaled_jacobian;

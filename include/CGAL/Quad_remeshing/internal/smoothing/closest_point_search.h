@@ -97,31 +97,22 @@ private:
   double squared_radius_;
 };
 
-// the closest point of the primitives of `tree` to `query` and its primitive, as
-// `tree.closest_point_and_primitive(query)` gives them (see Closest_point_search)
-template <typename AABBTraits>
-typename AABBTraits::Point_and_primitive_id closest_point_and_primitive(const CGAL::AABB_tree<AABBTraits>& tree,
-                                                                        const typename AABBTraits::Point_3& query)
-{
-  Closest_point_search<AABBTraits> search(query, tree.best_hint(query), tree.traits());
-  tree.traversal(query, search);
-  return search.closest_point_and_primitive();
-}
-
 /*
-  The same, knowing `bound`, the squared distance from `query` to some point of the primitives (a point
+  The closest point of the primitives of `tree` to `query` and its primitive, as
+  `tree.closest_point_and_primitive(query)` gives them (see Closest_point_search).
+  `bound`, if not negative, is the squared distance from `query` to some point of the primitives (a point
   on the face where the query was last time): only the boxes within it are tested, and only their
   primitives projected, which is most of the saving when `query` moved little. The answer is the same
-  as without the bound, ties included. The search starts from the same hint; a primitive farther than
-  the bound is farther than the closest point, so it is never the answer; the primitives as close as
-  the closest point are all within the bound and are visited in the same order, so the first of them
-  (or the hint, if its point is the closest) is still the one kept. A primitive whose box is within the
-  bound but whose point is not can still replace the hint for a while, as it would have without it.
+  as without it, ties included. The search starts from the same hint; a primitive farther than the bound
+  is farther than the closest point, so it is never the answer; the primitives as close as the closest
+  point are all within the bound and are visited in the same order, so the first of them (or the hint,
+  if its point is the closest) is still the one kept. A primitive whose box is within the bound but whose
+  point is not can still replace the hint for a while, as it would have without it.
 */
 template <typename AABBTraits>
 typename AABBTraits::Point_and_primitive_id closest_point_and_primitive(const CGAL::AABB_tree<AABBTraits>& tree,
                                                                         const typename AABBTraits::Point_3& query,
-                                                                        double bound)
+                                                                        double bound = -1.)
 {
   Closest_point_search<AABBTraits> search(query, tree.best_hint(query), tree.traits(), bound);
   tree.traversal(query, search);
