@@ -165,6 +165,7 @@ public:
   {
     if(candidate.vertices.size() < 2 || layout_.crosses_paths_tangentially(candidate)) return false;
     Patch_change c = layout_.preview_add_path(candidate);
+    if(separating_singularities) return accept_separation(std::move(c), candidate);
     const Change_counts n = count(c);
     const std::size_t invalid_before = n.invalid_before, quality_before = n.quality_before;
     const std::size_t invalid_after = n.invalid_after, quality_after = n.quality_after;
@@ -188,7 +189,24 @@ public:
     return true;
   }
 
+  // The rule of the `singularity_separation` round: a candidate inside one valid patch with several
+  // singularities is kept when every patch it makes is valid, has fewer of them, and at least
+  // `min_patch_faces` faces.
+  bool accept_separation(Patch_change c, const Path& candidate)
+  {
+    if(c.old_patches.size() != 1 || c.new_patches.size() < 2) return false;
+    const std::size_t before = layout_.patch(c.old_patches[0]).singularities.size();
+    for(const Patch& P : c.new_patches)
+      if(layout_.validity(P) != Layout::SATISFIED || P.singularities.size() >= before || P.faces.size() < min_patch_faces)
+        return false;
+    inserted_.push_back(layout_.add_path(candidate, std::move(c)));
+    add_to_distances(inserted_.back());
+    return true;
+  }
+
   static constexpr std::size_t min_patch_faces = 4;
+  // whether accept() applies the rule of the singularity separation instead (see accept_separation())
+  bool separating_singularities = false;
   // whether a split of a valid patch failing a quality condition is accepted for that reason alone
   bool split_quality_failing = true;
   static std::size_t u_turns(const Patch& P)
@@ -925,8 +943,8 @@ auto round_runner(Layout& layout, Layout_tracer<Layout>& tracer, Trace_patch_lay
   };
 }
 
-// The rounds after the clean-up: `last_resort_cuts`, `path_part_removal` and `corners` (see
-// `trace_patch_layout()`).
+// The rounds after the clean-up and the singularity separation: `last_resort_cuts`, `path_part_removal`
+// and `corners` (see `trace_patch_layout()`).
 template <typename TriangleMesh, typename Layout, typename Run>
 void run_final_layout_rounds(const TriangleMesh& tmesh, Layout& layout, Layout_tracer<Layout>& tracer,
                              unsigned iterations, Trace_patch_layout_statistics& stats, Run& run)
@@ -1011,6 +1029,14 @@ void run_final_layout_rounds(const TriangleMesh& tmesh, Layout& layout, Layout_t
     following the field, along the shortest edge path joining two of them, or, for a closed patch or one
     with a handle, along the border of the ball of half its faces; repeated (at most 64 times) until every
     patch is a disk;
+  - `singularity_separation` (after the clean-up, which would merge the parts again when neither meets
+    the quality conditions): a valid patch with several field singularities inside is split from its
+    straight boundary vertices to its boundary, a candidate kept when every patch it makes is valid, has
+    fewer singularities and at least 4 faces; repeated while it inserts paths (at most
+    `number_of_iterations` times). A patch's quads follow its boundary only, so where the surface inside
+    bulges out (a protrusion, around which the field turns at several singularities) they are stretched
+    over it: on elephant moved by ten diagonals, a three-sided patch of 878 triangles around 9
+    singularities left a quad mesh 6.3% of the diagonal from the input, 0.47% once split;
   - `last_resort_cuts` (after the clean-up, so that the other paths are the ones it keeps): a disk patch
     that is not convex or has fewer than 3 or more than 6 corners is cut along a shortest edge path
     through its interior, which need not follow the field, or along a path traced along the field, from
@@ -1186,6 +1212,27 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
     }
   }, false);
   stats.removed_paths = tracer.clean_up();
+  // A valid patch with several singularities inside is split between them, from its straight boundary
+  // nodes to its boundary, each part valid and with fewer singularities (after the clean-up, which would
+  // merge the parts again when neither meets the quality conditions). The quads of a patch follow its
+  // boundary only: where the surface inside bulges out (the field turns around singularities), they are
+  // stretched over it.
+  run("singularity_separation", [&](Round& r) {
+    tracer.separating_singularities = true;
+    for(unsigned pass = 0; pass < iterations && !tracer.out_of_time(); ++pass) {
+      std::vector<std::size_t> several;
+      for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
+        if(layout.patch(p).singularities.size() > 1 && layout.validity(p) == Layout::SATISFIED) several.push_back(p);
+      std::size_t kept = 0;
+      for(std::size_t p : several) {
+        if(p >= layout.number_of_patches() || layout.patch(p).singularities.size() < 2) continue;
+        auto c = tracer.trace_from(tracer.boundary_starts({Layout::STRAIGHT}, false, 32, p), tracer.boundary_nodes({p}), false);
+        kept += tracer.insert_farthest_first(c, r);
+      }
+      if(kept == 0) break;
+    }
+    tracer.separating_singularities = false;
+  });
   internal::run_final_layout_rounds(tmesh, layout, tracer, iterations, stats, run);
   stats.layout = layout.statistics();
   stats.seconds = total.time();
