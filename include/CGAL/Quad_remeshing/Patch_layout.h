@@ -30,6 +30,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <thread>
+#include <iomanip>
 #include <vector>
 
 /// weight of the advance along the field in the tracing cost, relative to the drift (`double`)
@@ -754,11 +755,11 @@ public:
     return s;
   }
 
-  /// writes the mesh as an ASCII PLY with one colour per patch
+  /// writes the mesh as an ASCII PLY with one colour per patch (coordinates with 17 significant digits)
   void write_ply(std::ostream& os) const
   {
     update();
-    os << "ply\nformat ascii 1.0\nelement vertex " << verts_.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
+    os << std::setprecision(17) << "ply\nformat ascii 1.0\nelement vertex " << verts_.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
        << "element face " << faces_.size() << "\nproperty list uchar int vertex_indices\n"
        << "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
     for(const Point_3& p : points_) os << p.x() << " " << p.y() << " " << p.z() << "\n";
@@ -770,9 +771,11 @@ public:
     }
   }
 
-  /// writes the paths as CGAL polylines (one line per path: number of points, then the coordinates)
+  /// writes the paths as CGAL polylines (one line per path: number of points, then the coordinates, with
+  /// 17 significant digits)
   void write_polylines(std::ostream& os) const
   {
+    os << std::setprecision(17);
     for(std::size_t id : path_ids()) {
       os << paths_[id].vertices.size();
       for(vertex_descriptor v : paths_[id].vertices) { const Point_3& p = points_[vindex_.at(v)]; os << " " << p.x() << " " << p.y() << " " << p.z(); }
