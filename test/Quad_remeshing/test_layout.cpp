@@ -10,9 +10,9 @@
 #include <CGAL/Quad_remeshing/trace_patch_layout.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/layout_conversion.h>
+#include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Real_timer.h>
@@ -808,9 +808,7 @@ struct Traced_for_refinement
     namespace QR = CGAL::Quad_remeshing;
     QR::read_and_repair(qr_test::data_file(file), m);
     if(shift != 0.) {
-      const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(m);
-      const double d = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
-                                 CGAL::square(b.zmax() - b.zmin()));
+      const double d = QR::internal::mesh_bbox_diagonal(m);
       const Vector_3 t(shift * d, -2. * shift * d, 3. * shift * d);
       for(V v : m.vertices()) m.point(v) = m.point(v) + t;
     }

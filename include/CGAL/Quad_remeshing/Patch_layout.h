@@ -24,13 +24,13 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
+#include <iomanip>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <thread>
-#include <iomanip>
 #include <vector>
 
 /// weight of the advance along the field in the tracing cost, relative to the drift (`double`)

@@ -184,9 +184,15 @@ public:
     const bool splits = !breaks_validity && some_fails && c.new_patches.size() > c.old_patches.size() &&
                         valid_after >= valid_before;
     if(!helps && !splits) return false;
+    insert(candidate, std::move(c));
+    return true;
+  }
+
+  // adds an accepted candidate to the layout and to the distances of the farthest-first order
+  void insert(const Path& candidate, Patch_change c)
+  {
     inserted_.push_back(layout_.add_path(candidate, std::move(c)));
     add_to_distances(inserted_.back());
-    return true;
   }
 
   // The rule of the `singularity_separation` round: a candidate inside one valid patch with several
@@ -199,8 +205,7 @@ public:
     for(const Patch& P : c.new_patches)
       if(layout_.validity(P) != Layout::SATISFIED || P.singularities.size() >= before || P.faces.size() < min_patch_faces)
         return false;
-    inserted_.push_back(layout_.add_path(candidate, std::move(c)));
-    add_to_distances(inserted_.back());
+    insert(candidate, std::move(c));
     return true;
   }
 
@@ -1219,13 +1224,18 @@ Trace_patch_layout_statistics trace_patch_layout(const TriangleMesh& tmesh, Edge
   // stretched over it.
   run("singularity_separation", [&](Round& r) {
     tracer.separating_singularities = true;
+    // (patch ids change as paths go in: a patch is looked at again before its turn)
+    auto has_several = [&](std::size_t p) {
+      return p < layout.number_of_patches() && layout.patch(p).singularities.size() > 1 &&
+             layout.validity(p) == Layout::SATISFIED;
+    };
     for(unsigned pass = 0; pass < iterations && !tracer.out_of_time(); ++pass) {
       std::vector<std::size_t> several;
       for(std::size_t p = 0; p < layout.number_of_patches(); ++p)
-        if(layout.patch(p).singularities.size() > 1 && layout.validity(p) == Layout::SATISFIED) several.push_back(p);
+        if(has_several(p)) several.push_back(p);
       std::size_t kept = 0;
       for(std::size_t p : several) {
-        if(p >= layout.number_of_patches() || layout.patch(p).singularities.size() < 2) continue;
+        if(!has_several(p)) continue;
         auto c = tracer.trace_from(tracer.boundary_starts({Layout::STRAIGHT}, false, 32, p), tracer.boundary_nodes({p}), false);
         kept += tracer.insert_farthest_first(c, r);
       }
