@@ -177,6 +177,41 @@ BOOST_AUTO_TEST_CASE(draco_deterministic_with_threads)
   BOOST_TEST(quality.flipped_quads == 0u); // (the package's own count, computed on the polygons)
 }
 
+// No absolute constant: the same mesh scaled by 1024 (exact in floating point) gives exactly 1024 times the
+// quads (but for coordinates under 1e-300), the same connectivity. abc_00000008 (with faces 5e8 times smaller than others) gave 2954 quads
+// instead of 3029 while its default length was not exactly scaled.
+BOOST_AUTO_TEST_CASE(scaled_by_a_power_of_two_gives_the_scaled_quads)
+{
+  Mesh t;
+  QR::read_and_repair(qr_test::data_file("abc_00000008.off"), t);
+  Mesh big = t;
+  for(auto v : big.vertices())
+  {
+    const auto& p = big.point(v);
+    big.point(v) = qr_test::Point_3(1024. * p.x(), 1024. * p.y(), 1024. * p.z());
+  }
+  Mesh q, qbig;
+  QR::quad_remesh(t, q);
+  QR::quad_remesh(big, qbig);
+  BOOST_TEST(q.number_of_faces() > 1000u);
+  BOOST_REQUIRE_EQUAL(q.number_of_faces(), qbig.number_of_faces());
+  BOOST_REQUIRE_EQUAL(q.number_of_vertices(), qbig.number_of_vertices());
+  // exact but for values near zero, where a subnormal number (under 2.2e-308) loses bits
+  std::size_t moved = 0, other_faces = 0;
+  for(auto v : q.vertices())
+    for(int i = 0; i < 3; ++i)
+      if(!(std::abs(qbig.point(v)[i] - 1024. * q.point(v)[i]) < 1e-300)) { ++moved; break; }
+  for(auto f : q.faces())
+  {
+    std::vector<Mesh::Vertex_index> a, b;
+    for(auto v : vertices_around_face(q.halfedge(f), q)) a.push_back(v);
+    for(auto v : vertices_around_face(qbig.halfedge(f), qbig)) b.push_back(v);
+    if(a != b) ++other_faces;
+  }
+  BOOST_TEST(moved == 0u);
+  BOOST_TEST(other_faces == 0u);
+}
+
 // spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled
 // Jacobian -0.001) that no single vertex move could open; the relaxation of its region does. And no quad
 // lies flipped over.

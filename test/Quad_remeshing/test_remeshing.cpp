@@ -574,6 +574,30 @@ BOOST_AUTO_TEST_CASE(density_helpers)
   BOOST_CHECK_THROW(QR::remesh_for_quadrangulation(m, f, QR::parameters::quad_edge_length(-1.)), std::invalid_argument);
 }
 
+// The default length is a length: a mesh scaled by a power of two (exact in floating point) gets exactly
+// that multiple of it. abc_00000008 (closed, so its sphericity counts) got 1023.9999999999993 times its
+// length at 1024 times its size while (6 V)^(2/3) was taken of the scaled volume, and the quantization then
+// chose other counts (2954 quads instead of 3029).
+BOOST_AUTO_TEST_CASE(default_length_scales_with_the_mesh)
+{
+  for(const char* name : {"abc_00000008.off", "fandisk.off", "bunny.off"})
+  {
+    const Mesh m = load(name);
+    BOOST_TEST_CONTEXT(name)
+    for(double s : {1024., 1. / 1024.})
+    {
+      Mesh scaled = m;
+      for(auto v : scaled.vertices())
+      {
+        const auto& p = scaled.point(v);
+        scaled.point(v) = Point_3(s * p.x(), s * p.y(), s * p.z());
+      }
+      BOOST_TEST(QR::default_quad_edge_length(scaled) == s * QR::default_quad_edge_length(m));
+      BOOST_TEST(QR::quad_edge_length_from_face_count(scaled, 1000) == s * QR::quad_edge_length_from_face_count(m, 1000));
+    }
+  }
+}
+
 // A part much smaller than the rest is remeshed at its own, shorter length (`component_resolution`, 8
 // quad edges along its diagonal by default): truck's steering wheel beside fandisk gets quads of a
 // quarter of fandisk's (0.023 instead of 0.09, rounded down to a power of sqrt(2)): 1512 triangles

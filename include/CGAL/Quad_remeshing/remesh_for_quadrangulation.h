@@ -10,6 +10,7 @@
 #include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 #include <CGAL/Quad_remeshing/internal/component_lengths.h>
 #include <CGAL/Quad_remeshing/Report.h>
+#include <CGAL/Quad_remeshing/detect_feature_edges.h> // (its named parameters: the feature corners)
 #include <CGAL/Quad_remeshing/parameters.h>
 #include <CGAL/Quad_remeshing/internal/features/feature_graph.h>
 #include <CGAL/Quad_remeshing/internal/remeshing/adaptive_remeshing.h>
@@ -176,7 +177,9 @@ double default_quad_edge_length(const TriangleMesh& tmesh, const NamedParameters
     }
     double v = 0.;
     for(double x : vol) v += std::abs(x);
-    sph = std::cbrt(CGAL_PI) * std::pow(6. * v, 2. / 3.) / area;
+    // (6V)^(2/3) / A written as a power of the scale-free 6V / A^(3/2): a mesh scaled by a power of two
+    // gets exactly that multiple of the length (pow() of scaled values may differ in the last bit)
+    sph = std::cbrt(CGAL_PI) * std::pow(6. * v / (area * std::sqrt(area)), 2. / 3.);
   }
   const double L = (std::min)(std::sqrt(2.309 * area * sph * sph / 2000.), std::sqrt(2.309 * area / 10000.));
   return 2. * L;

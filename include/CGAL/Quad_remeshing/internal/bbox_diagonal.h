@@ -8,6 +8,7 @@
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 #include <CGAL/number_utils.h>
 
 #include <boost/graph/graph_traits.hpp>
