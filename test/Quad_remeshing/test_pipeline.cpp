@@ -442,6 +442,26 @@ BOOST_AUTO_TEST_CASE(tips_left_by_a_round_get_the_next)
   BOOST_TEST(result.number_of_faces() == quads.number_of_faces());
 }
 
+// The distance of the quads to the input is measured at their vertices too: a grid of unit quads over a
+// plane, one inner vertex raised by 0.5, is 0.5 from it there (its edge midpoints are 0.25 away, its quad
+// centres 0.125; the measure took only those and gave 0.25). The vertex goes back down onto the plane.
+BOOST_AUTO_TEST_CASE(tips_measure_quad_vertices)
+{
+  typedef qr_test::Point_3 P;
+  const Mesh input = plane_with_spikes(8, [](int, int) { return 0.; });
+  auto input_feature = get(CGAL::dynamic_edge_property_t<bool>(), input);
+  for(auto e : input.edges()) put(input_feature, e, input.is_border(e));
+  Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, i == 4 && j == 4 ? 0.5 : 0.); });
+  auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), quads);
+  for(auto e : quads.edges()) put(qfeature, e, quads.is_border(e));
+  Mesh result;
+  const QR::internal::Tip_snapping_statistics st =
+    snap_tips(input, input_feature, quads, qfeature, [](const Mesh&, const auto&) {}, result);
+  BOOST_TEST(st.distance_before == 0.5, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(st.kept);
+  BOOST_TEST(st.distance_after < 0.1);
+}
+
 // A spike in the middle of a plane that a 16 x 16 grid of unit quads cuts off, the grid's inner vertices
 // jittered (so that smoothing them would move them). A round of tips smooths only the quads within
 // tip_smoothing_rings rings of its tips, every other vertex held (all the quads were smoothed again before,

@@ -142,8 +142,8 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
     \cgalParamNBegin{fidelity_tolerance}
       \cgalParamDescription{if positive, the patches whose triangles are farther than this fraction of the
                             bounding-box diagonal from the smoothed quads, or whose quads are farther from
-                            them (measured at the vertices of the triangles and at the centre and edge midpoints
-                            of the quads), get half as many quads again along each arc, and the quads are made
+                            them (measured at the vertices of the triangles and at the vertices, centre, edge
+                            midpoints and triangle centroids of the quads), get half as many quads again along each arc, and the quads are made
                             again; they are kept if they are closer by a tenth at least and at most 1.5 times as
                             many as the first quads. At most 2 rounds, the second only if the first added
                             at most a fifth of the quads.

@@ -34,7 +34,8 @@ namespace internal {
 /*
   How far a quad mesh is from each patch of `d` on the triangle mesh `tm`, both ways: from the vertices
   of the patch's triangles to the quads (a tip of the patch cut short, quads across a bend), and from
-  points of the quads (the centre and the edge midpoints of each quad) to the triangles, each such
+  points of the quads (their vertices; the centre, the edge midpoints and the centroids of the two
+  triangles of each quad: quality::for_each_soup_sample()) to the triangles, each such
   distance counting for the patch of the triangle nearest to it (a quad bridging a groove). The quads are
   triangulated as the package's quality measures do (internal::quality::triangulate_soup(): a quad along
   its shorter diagonal). The tree of `tm` and the patch of each face are built once, for every quad
@@ -93,7 +94,7 @@ public:
           distance[p] = (std::max)(distance[p], x);
         }
 
-    // from the quads (centre and edge midpoints) to the triangle mesh
+    // from the quads (vertices, centres, edge midpoints, triangle centroids) to the triangle mesh
     const auto fim = get(CGAL::face_index, tm_);
     auto measure = [&](const Point& s) {
       const auto hit = surface_.closest_point_and_primitive(s);
@@ -101,7 +102,7 @@ public:
       if(p < distance.size())
         distance[p] = (std::max)(distance[p], std::sqrt(CGAL::to_double(CGAL::squared_distance(s, hit.first))));
     };
-    quality::for_each_polygon_sample(points, polygons, measure);
+    quality::for_each_soup_sample(points, polygons, triangles, measure);
     return distance;
   }
 

@@ -100,8 +100,8 @@ struct Tip_snapping_statistics
   tips in a copy of the quads, which `smooth(copy, copy_feature, fixed)` smooths with them held (it must
   not move the vertices of `fixed`), and with them every vertex farther than `tip_smoothing_rings` rings
   from all of them, so that only the quads around the tips change. The copy is kept if the largest
-  distance between the input and the quads, both ways (input vertices to the quads; quad centres and
-  edge midpoints to the input), falls and no more quads are inverted (scaled Jacobian <= 0) than in
+  distance between the input and the quads, both ways (input vertices to the quads; quad vertices,
+  centres, edge midpoints and triangle centroids to the input), falls and no more quads are inverted (scaled Jacobian <= 0) than in
   `qmesh`; if not, the round is tried again with tips two edge lengths apart.
   Then the next round (at most `max_tip_rounds`) does the same on the kept
   copy, with the tips of the rounds before still held: an ear is a blade rather than a point, and the
@@ -152,7 +152,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
       worst = (std::max)(worst, d);
       if(far != nullptr && d > tolerance) far->emplace_back(d, get(ivpm, v));
     }
-    quality::for_each_polygon_sample(points, polygons, [&](const Point& s) {
+    quality::for_each_soup_sample(points, polygons, triangles, [&](const Point& s) {
       worst = (std::max)(worst, std::sqrt(CGAL::to_double(surface.squared_distance(s))));
     });
     return worst;

@@ -71,19 +71,27 @@ std::vector<typename K::Triangle_3> triangulate_soup(const std::vector<typename 
   return out;
 }
 
-// Calls `sample(point)` on the centre and on every edge midpoint of each polygon of the soup (with three
-// corners or more): where a quad mesh strays from a surface between its vertices (a quad across a groove).
-template <typename Point_3, typename Sample>
-void for_each_polygon_sample(const std::vector<Point_3>& pts, const Index_polygons& polygons, const Sample& sample)
+// Calls `sample(point)` on every vertex of the soup's polygons, on the centre and every edge midpoint of
+// each polygon (with three corners or more), and on the centroid of each of `triangles` (the soup's
+// triangulate_soup()): where a quad mesh strays from a surface at or between its vertices (a quad across a
+// groove, a vertex inside a thin blade of the surface, a twisted quad whose triangle bulges away while
+// its centre and edge midpoints stay near).
+template <typename Point_3, typename Triangle_3, typename Sample>
+void for_each_soup_sample(const std::vector<Point_3>& pts, const Index_polygons& polygons,
+                          const std::vector<Triangle_3>& triangles, const Sample& sample)
 {
+  std::vector<bool> used(pts.size(), false);
   for(const std::vector<std::size_t>& f : polygons)
   {
     if(f.size() < 3) continue;
     typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 sum = CGAL::NULL_VECTOR;
-    for(std::size_t i : f) sum = sum + (pts[i] - CGAL::ORIGIN);
+    for(std::size_t i : f) { sum = sum + (pts[i] - CGAL::ORIGIN); used[i] = true; }
     sample(CGAL::ORIGIN + sum / double(f.size()));
     for(std::size_t i = 0; i < f.size(); ++i) sample(CGAL::midpoint(pts[f[i]], pts[f[(i + 1) % f.size()]]));
   }
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    if(used[i]) sample(pts[i]);
+  for(const Triangle_3& t : triangles) sample(CGAL::centroid(t));
 }
 
 // Runs `work(begin, end)` over [0, n) split into `threads` contiguous chunks; each index is
