@@ -9,6 +9,8 @@
 #include <CGAL/Quad_remeshing/quad_remesh.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/tip_snapping.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polyhedron_3.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -210,6 +212,35 @@ BOOST_AUTO_TEST_CASE(scaled_by_a_power_of_two_gives_the_scaled_quads)
   }
   BOOST_TEST(moved == 0u);
   BOOST_TEST(other_faces == 0u);
+}
+
+// quad_remesh() takes other models of the graph concepts: a Polyhedron_3 (without ids) in and out gives
+// the quads of the Surface_mesh run (the stages run on a Surface_mesh copy; they did not compile with a
+// Polyhedron_3, which has no point() member and whose descriptors are not indices).
+BOOST_AUTO_TEST_CASE(polyhedron_in_and_out)
+{
+  typedef CGAL::Polyhedron_3<qr_test::Kernel> Polyhedron;
+  Mesh t;
+  Polyhedron pt;
+  BOOST_REQUIRE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(qr_test::data_file("lego.off"), t));
+  BOOST_REQUIRE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(qr_test::data_file("lego.off"), pt));
+  Mesh q;
+  Polyhedron pq;
+  QR::quad_remesh(t, q);
+  QR::quad_remesh(pt, pq);
+  BOOST_TEST(q.number_of_faces() > 500u);
+  BOOST_TEST(num_faces(pq) == num_faces(q));
+  BOOST_TEST(num_vertices(pq) == num_vertices(q));
+  std::vector<qr_test::Point_3> a, b;
+  for(auto v : q.vertices()) a.push_back(q.point(v));
+  for(auto v : vertices(pq)) b.push_back(v->point());
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  BOOST_TEST((a == b));
+  std::size_t not_quads = 0;
+  for(auto f : faces(pq))
+    if(CGAL::halfedges_around_face(halfedge(f, pq), pq).size() != 4u) ++not_quads;
+  BOOST_TEST(not_quads == 0u);
 }
 
 // spot: the smoothing left one interior quad folded onto itself (two opposite corners 1e-4 apart, scaled

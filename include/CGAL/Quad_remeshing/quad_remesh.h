@@ -36,6 +36,7 @@
 #include <optional>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -50,203 +51,12 @@ void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
 
 } // namespace internal
 
-/*!
-  \ingroup PkgQuadRemeshingRef
+namespace internal {
 
-  turns a triangle mesh into a pure-quad mesh that reproduces its feature lines, running every stage
-  with its defaults: `detect_feature_edges()`, `remesh_for_quadrangulation()` (on a copy of `tmesh`),
-  `compute_cross_field()` and `compute_cross_field_singularities()`, `Patch_layout` and
-  `trace_patch_layout()`, `quantize_patch_sides()`, `quadrangulate_polygon()` per patch,
-  `assemble_quad_mesh()` and `smooth_quad_mesh()`. Where the patterns of some patches cannot be glued
-  (`Quad_assembly_conflict`), the arcs of those patches get more edges and the counts are solved again
-  (at most 4 times; the `quadrangulate` record's `count_repairs` and `repaired_patches` say how often
-  and for how many patches). Last, where the smoothed quads stray from the triangle mesh farther than
-  `fidelity_tolerance` (a tip thinner than a quad cut short, quads across a groove), the arcs of those
-  patches get half as many edges again, the counts are solved again and the quads assembled and smoothed
-  again; the new quads replace the old ones if they are closer by a tenth at least and at most 1.5 times
-  as many as the first (at most 2 rounds, the second only if the first added at most a fifth of the
-  quads; the `fidelity` record says what was done). Then the input vertices still farther than
-  `fidelity_tolerance` from the quads (the tip of an ear or a tusk, narrower than a quad) each take the
-  nearest free quad vertex (not on a feature line or the border, within two mean quad edge lengths, its
-  normal agreeing, one per quad edge length or, if that is not closer, per two, at most 64), which moves
-  onto it and is held while the quads are smoothed 10 more times; the result is kept if the largest
-  distance between the input and the quads, both ways, falls and no more quads are inverted, and the
-  tips it left get the next round (at most 3, the tips taken before still held; the `fidelity` record's
-  `tips`).
-
-  \code{.cpp}
-  Mesh tmesh, qmesh;
-  CGAL::Quad_remeshing::read_and_repair("fandisk.off", tmesh);
-  CGAL::Quad_remeshing::quad_remesh(tmesh, qmesh);
-  \endcode
-
-  @tparam TriangleMesh a model of `MutableFaceGraph` with an internal point property map
-          (e.g. `CGAL::Surface_mesh`), copy-constructible
-  @tparam QuadMesh a model of `MutableFaceGraph`
-  @tparam NamedParameters a sequence of named parameters
-
-  @param tmesh the input triangle mesh (not changed)
-  @param qmesh the output, empty on entry
-  @param np an optional sequence of named parameters among the ones listed below; they are also
-         passed on to the stages (e.g. `feature_angle`, `quad_edge_length`, `number_of_threads`)
-
-  \cgalNamedParamsBegin
-    \cgalParamNBegin{quad_edge_length}
-      \cgalParamDescription{the target edge length of the quads}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`default_quad_edge_length(tmesh)`}
-    \cgalParamNEnd
-    \cgalParamNBegin{number_of_quads}
-      \cgalParamDescription{if positive, the approximate number of quads of the output: the remeshing is made for
-                            `quad_edge_length_from_face_count(tmesh, n)`, the sizing tolerance is 0 unless given,
-                            and the quad edge length of the quantization grows until its arc counts give at most
-                            10% more quads than asked for (at most 4 solves; a layout with more patches than the
-                            count allows keeps it above); ignored for the remeshing if `quad_edge_length` is given}
-      \cgalParamType{`std::size_t`}
-      \cgalParamDefault{`0`}
-    \cgalParamNEnd
-    \cgalParamNBegin{sizing_tolerance}
-      \cgalParamDescription{if positive, quads get smaller (down to a quarter of `quad_edge_length`) where the
-                            surface or a feature line bends, so that the sagitta of a quad diagonal stays under
-                            this fraction of the bounding-box diagonal; the arcs' target edge counts are measured
-                            in the local length (see the user manual for the measured effect); 0 gives the
-                            uniform `quad_edge_length` everywhere}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
-    \cgalParamNEnd
-    \cgalParamNBegin{component_resolution}
-      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`, and used the same way by the
-                            quantization: a connected component other than the largest whose bounding-box
-                            diagonal spans fewer than this many quad edges gets shorter quads (down to a
-                            quarter of `quad_edge_length`); `0`: one length for every component}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`8`}
-    \cgalParamNEnd
-    \cgalParamNBegin{feature_tolerance}
-      \cgalParamDescription{the quad edges along a feature line (a crease or the boundary) that bends stay within
-                            this fraction of the bounding-box diagonal of the line: the quantization gives such
-                            arcs at least the edges that takes, up to about twice their target count (0: no
-                            such bound)}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0.002`}
-    \cgalParamNEnd
-    \cgalParamNBegin{surface_tolerance}
-      \cgalParamDescription{if positive, the quad edges of the layout's arcs that are not on a feature line stay within
-                            this fraction of the bounding-box diagonal along the surface normal: an arc over a bend
-                            of the surface (a fillet, a rounded body) gets at least the edges that takes, up to about
-                            twice its target count. The density elsewhere does not change (see the user manual for
-                            the measured effect). 0: no such bound}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
-    \cgalParamNEnd
-    \cgalParamNBegin{fidelity_tolerance}
-      \cgalParamDescription{if positive, the patches whose triangles are farther than this fraction of the
-                            bounding-box diagonal from the smoothed quads, or whose quads are farther from
-                            them (measured at the vertices of the triangles and at the vertices, centre, edge
-                            midpoints and triangle centroids of the quads), get half as many quads again along each arc, and the quads are made
-                            again; they are kept if they are closer by a tenth at least and at most 1.5 times as
-                            many as the first quads. At most 2 rounds, the second only if the first added
-                            at most a fifth of the quads.
-                            0: no such refinement}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0.004` (`0` with `number_of_quads`)}
-    \cgalParamNEnd
-    \cgalParamNBegin{adaptive_remeshing}
-      \cgalParamDescription{whether `remesh_for_quadrangulation()` runs its adaptive pass after the uniform one
-                            (experimental, see there)}
-      \cgalParamType{Boolean}
-      \cgalParamDefault{`false`}
-    \cgalParamNEnd
-    \cgalParamNBegin{far_region_rounds}
-      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`: how many times the regions its uniform
-                            pass leaves farther than 70% of `remeshing_tolerance` from the input are remeshed
-                            again at a quarter, then an eighth, of the quad edge length. Off by default here (the
-                            stage's own default is 2): the triangles get closer to the input (elephant 0.72% ->
-                            0.19% of the diagonal), but the later stages react to the finer triangles in ways that
-                            do not follow that distance. On the 22 development meshes (qmeval) it brought 7
-                            outputs closer to the input (face 0.52% -> 0.35%, fertility 0.46% -> 0.35%, elephant
-                            0.48% -> 0.40%) and 9 farther (truck 0.46% -> 0.68% with an inverted quad, featuretype
-                            0.39% -> 0.56%, camelhead 0.46% -> 0.54%), chair_doublesided's mean scaled Jacobian fell
-                            from 0.92 to 0.64, and the median quad count rose 7%}
-      \cgalParamType{`unsigned`}
-      \cgalParamDefault{`0`}
-    \cgalParamNEnd
-    \cgalParamNBegin{layout_refinement}
-      \cgalParamDescription{whether `refine_patch_layout()` runs after `trace_patch_layout()`: the triangle mesh
-                            gets a vertex where a cut across a thin wedge needs one, and the patches that stay
-                            non-convex for want of it are cut. Off by default: it lowers the number of invalid
-                            patches (54 -> 24 on the 22 development meshes), raises truck's mean scaled
-                            Jacobian from 0.78 to 0.81 and leaves no quad flipped over (truck has 6 without
-                            it), but the quantization then lands elsewhere on elephant, whose output goes
-                            from 0.47% to 0.56% of the diagonal from the input (qmeval; camelhead 0.44% ->
-                            0.50%)}
-      \cgalParamType{Boolean}
-      \cgalParamDefault{`false`}
-    \cgalParamNEnd
-    \cgalParamNBegin{hold_sharp_edges}
-      \cgalParamDescription{whether `remesh_for_quadrangulation()` holds the sharp edges that are not features in
-                            place (see there)}
-      \cgalParamType{Boolean}
-      \cgalParamDefault{`true`}
-    \cgalParamNEnd
-    \cgalParamNBegin{remeshing_tolerance}
-      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`: the distance to the input, as a fraction of
-                            the bounding-box diagonal, beyond which the bends of the feature lines are held
-                            (and that the adaptive pass aims at)}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0.002`}
-    \cgalParamNEnd
-    \cgalParamNBegin{curvature_alignment_weight}
-      \cgalParamDescription{passed on to `compute_cross_field()`: the weight of the pull of the cross field towards
-                            the principal curvature directions (0: the smoothest field)}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0.1`}
-    \cgalParamNEnd
-    \cgalParamNBegin{curvature_smoothing_steps}
-      \cgalParamDescription{passed on to `compute_cross_field()`: the face-ring averaging steps of the curvature
-                            directions}
-      \cgalParamType{`int`}
-      \cgalParamDefault{`8`}
-    \cgalParamNEnd
-    \cgalParamNBegin{feature_angle}
-      \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`35`}
-    \cgalParamNEnd
-    \cgalParamNBegin{feature_gap_angle}
-      \cgalParamDescription{the dihedral angle in degrees above which an edge can close a gap in a feature
-                            line (see `detect_feature_edges()`)}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`feature_angle - 10`}
-    \cgalParamNEnd
-    \cgalParamNBegin{maximum_running_time}
-      \cgalParamDescription{a time limit in seconds for the whole run. The stages that can stop early get a
-                            share of the time left when they start: the layout rounds (fewer paths: patches
-                            may be less regular), the quantization solves (the best solution found, or the
-                            solver-free fallback) and the smoothing iterations. The other stages always run
-                            to their end, so a limit shorter than they take is exceeded. The report's
-                            `"time_limit"` record says whether the limit was met and what each stage gave up.
-                            With a limit the output depends on the speed and load of the machine.}
-      \cgalParamType{`double`}
-      \cgalParamDefault{`0` (no limit: the output depends on the input and the parameters only)}
-    \cgalParamNEnd
-    \cgalParamNBegin{callback}
-      \cgalParamDescription{called with the name of each stage when it starts}
-      \cgalParamType{a callable `void(const std::string&)`}
-      \cgalParamDefault{none}
-    \cgalParamNEnd
-    \cgalParamNBegin{verbose}
-      \cgalParamDescription{whether the stages print their progress and timing to `std::cerr`}
-      \cgalParamType{Boolean}
-      \cgalParamDefault{`false`}
-    \cgalParamNEnd
-  \cgalNamedParamsEnd
-
-  @return the report of every stage (key: the stage name) and the total `"seconds"`
-  @throws std::invalid_argument or std::runtime_error with the reason when a stage fails
-*/
-template <typename TriangleMesh, typename QuadMesh, typename NamedParameters = parameters::Default_named_parameters>
-Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParameters& np = parameters::default_values())
+// quad_remesh() on Surface_mesh input and output (every stage is run on a Surface_mesh, whose indices
+// stay dense once its garbage is collected)
+template <typename TriangleMesh, typename QuadMesh, typename NamedParameters>
+Report quad_remesh_on_surface_meshes(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -428,6 +238,233 @@ Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParame
   report["time_limit"] = budget.report();
   report["seconds"] = timer.time();
   return report;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgQuadRemeshingRef
+
+  turns a triangle mesh into a pure-quad mesh that reproduces its feature lines, running every stage
+  with its defaults: `detect_feature_edges()`, `remesh_for_quadrangulation()` (on a copy of `tmesh`),
+  `compute_cross_field()` and `compute_cross_field_singularities()`, `Patch_layout` and
+  `trace_patch_layout()`, `quantize_patch_sides()`, `quadrangulate_polygon()` per patch,
+  `assemble_quad_mesh()` and `smooth_quad_mesh()`. Where the patterns of some patches cannot be glued
+  (`Quad_assembly_conflict`), the arcs of those patches get more edges and the counts are solved again
+  (at most 4 times; the `quadrangulate` record's `count_repairs` and `repaired_patches` say how often
+  and for how many patches). Last, where the smoothed quads stray from the triangle mesh farther than
+  `fidelity_tolerance` (a tip thinner than a quad cut short, quads across a groove), the arcs of those
+  patches get half as many edges again, the counts are solved again and the quads assembled and smoothed
+  again; the new quads replace the old ones if they are closer by a tenth at least and at most 1.5 times
+  as many as the first (at most 2 rounds, the second only if the first added at most a fifth of the
+  quads; the `fidelity` record says what was done). Then the input vertices still farther than
+  `fidelity_tolerance` from the quads (the tip of an ear or a tusk, narrower than a quad) each take the
+  nearest free quad vertex (not on a feature line or the border, within two mean quad edge lengths, its
+  normal agreeing, one per quad edge length or, if that is not closer, per two, at most 64), which moves
+  onto it and is held while the quads are smoothed 10 more times; the result is kept if the largest
+  distance between the input and the quads, both ways, falls and no more quads are inverted, and the
+  tips it left get the next round (at most 3, the tips taken before still held; the `fidelity` record's
+  `tips`).
+
+  \code{.cpp}
+  Mesh tmesh, qmesh;
+  CGAL::Quad_remeshing::read_and_repair("fandisk.off", tmesh);
+  CGAL::Quad_remeshing::quad_remesh(tmesh, qmesh);
+  \endcode
+
+  @tparam TriangleMesh a model of `FaceListGraph` with an internal point property map (e.g.
+          `CGAL::Surface_mesh`, or `CGAL::Polyhedron_3`, which need not have ids); the stages run on
+          a `CGAL::Surface_mesh` of the points of the geometric traits, a copy of `tmesh` unless it is one
+  @tparam QuadMesh a model of `MutableFaceGraph` (e.g. `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`); a
+          mesh of another type than that `CGAL::Surface_mesh` is cleared and gets a copy of its quads
+  @tparam NamedParameters a sequence of named parameters
+
+  @param tmesh the input triangle mesh (not changed)
+  @param qmesh the output, empty on entry
+  @param np an optional sequence of named parameters among the ones listed below; they are also
+         passed on to the stages (e.g. `feature_angle`, `quad_edge_length`, `number_of_threads`)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{quad_edge_length}
+      \cgalParamDescription{the target edge length of the quads}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`default_quad_edge_length(tmesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_quads}
+      \cgalParamDescription{if positive, the approximate number of quads of the output: the remeshing is made for
+                            `quad_edge_length_from_face_count(tmesh, n)`, the sizing tolerance is 0 unless given,
+                            and the quad edge length of the quantization grows until its arc counts give at most
+                            10% more quads than asked for (at most 4 solves; a layout with more patches than the
+                            count allows keeps it above); ignored for the remeshing if `quad_edge_length` is given}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{`0`}
+    \cgalParamNEnd
+    \cgalParamNBegin{sizing_tolerance}
+      \cgalParamDescription{if positive, quads get smaller (down to a quarter of `quad_edge_length`) where the
+                            surface or a feature line bends, so that the sagitta of a quad diagonal stays under
+                            this fraction of the bounding-box diagonal; the arcs' target edge counts are measured
+                            in the local length (see the user manual for the measured effect); 0 gives the
+                            uniform `quad_edge_length` everywhere}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
+    \cgalParamNEnd
+    \cgalParamNBegin{component_resolution}
+      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`, and used the same way by the
+                            quantization: a connected component other than the largest whose bounding-box
+                            diagonal spans fewer than this many quad edges gets shorter quads (down to a
+                            quarter of `quad_edge_length`); `0`: one length for every component}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`8`}
+    \cgalParamNEnd
+    \cgalParamNBegin{feature_tolerance}
+      \cgalParamDescription{the quad edges along a feature line (a crease or the boundary) that bends stay within
+                            this fraction of the bounding-box diagonal of the line: the quantization gives such
+                            arcs at least the edges that takes, up to about twice their target count (0: no
+                            such bound)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.002`}
+    \cgalParamNEnd
+    \cgalParamNBegin{surface_tolerance}
+      \cgalParamDescription{if positive, the quad edges of the layout's arcs that are not on a feature line stay within
+                            this fraction of the bounding-box diagonal along the surface normal: an arc over a bend
+                            of the surface (a fillet, a rounded body) gets at least the edges that takes, up to about
+                            twice its target count. The density elsewhere does not change (see the user manual for
+                            the measured effect). 0: no such bound}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.002` (`0` with `number_of_quads`)}
+    \cgalParamNEnd
+    \cgalParamNBegin{fidelity_tolerance}
+      \cgalParamDescription{if positive, the patches whose triangles are farther than this fraction of the
+                            bounding-box diagonal from the smoothed quads, or whose quads are farther from
+                            them (measured at the vertices of the triangles and at the vertices, centre, edge
+                            midpoints and triangle centroids of the quads), get half as many quads again along each arc, and the quads are made
+                            again; they are kept if they are closer by a tenth at least and at most 1.5 times as
+                            many as the first quads. At most 2 rounds, the second only if the first added
+                            at most a fifth of the quads.
+                            0: no such refinement}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.004` (`0` with `number_of_quads`)}
+    \cgalParamNEnd
+    \cgalParamNBegin{adaptive_remeshing}
+      \cgalParamDescription{whether `remesh_for_quadrangulation()` runs its adaptive pass after the uniform one
+                            (experimental, see there)}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{far_region_rounds}
+      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`: how many times the regions its uniform
+                            pass leaves farther than 70% of `remeshing_tolerance` from the input are remeshed
+                            again at a quarter, then an eighth, of the quad edge length. Off by default here (the
+                            stage's own default is 2): the triangles get closer to the input (elephant 0.72% ->
+                            0.19% of the diagonal), but the later stages react to the finer triangles in ways that
+                            do not follow that distance. On the 22 development meshes (qmeval) it brought 7
+                            outputs closer to the input (face 0.52% -> 0.35%, fertility 0.46% -> 0.35%, elephant
+                            0.48% -> 0.40%) and 9 farther (truck 0.46% -> 0.68% with an inverted quad, featuretype
+                            0.39% -> 0.56%, camelhead 0.46% -> 0.54%), chair_doublesided's mean scaled Jacobian fell
+                            from 0.92 to 0.64, and the median quad count rose 7%}
+      \cgalParamType{`unsigned`}
+      \cgalParamDefault{`0`}
+    \cgalParamNEnd
+    \cgalParamNBegin{layout_refinement}
+      \cgalParamDescription{whether `refine_patch_layout()` runs after `trace_patch_layout()`: the triangle mesh
+                            gets a vertex where a cut across a thin wedge needs one, and the patches that stay
+                            non-convex for want of it are cut. Off by default: it lowers the number of invalid
+                            patches (54 -> 24 on the 22 development meshes), raises truck's mean scaled
+                            Jacobian from 0.78 to 0.81 and leaves no quad flipped over (truck has 6 without
+                            it), but the quantization then lands elsewhere on elephant, whose output goes
+                            from 0.47% to 0.56% of the diagonal from the input (qmeval; camelhead 0.44% ->
+                            0.50%)}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{hold_sharp_edges}
+      \cgalParamDescription{whether `remesh_for_quadrangulation()` holds the sharp edges that are not features in
+                            place (see there)}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{remeshing_tolerance}
+      \cgalParamDescription{passed on to `remesh_for_quadrangulation()`: the distance to the input, as a fraction of
+                            the bounding-box diagonal, beyond which the bends of the feature lines are held
+                            (and that the adaptive pass aims at)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.002`}
+    \cgalParamNEnd
+    \cgalParamNBegin{curvature_alignment_weight}
+      \cgalParamDescription{passed on to `compute_cross_field()`: the weight of the pull of the cross field towards
+                            the principal curvature directions (0: the smoothest field)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{curvature_smoothing_steps}
+      \cgalParamDescription{passed on to `compute_cross_field()`: the face-ring averaging steps of the curvature
+                            directions}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`8`}
+    \cgalParamNEnd
+    \cgalParamNBegin{feature_angle}
+      \cgalParamDescription{the dihedral angle in degrees above which an edge is a feature}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`35`}
+    \cgalParamNEnd
+    \cgalParamNBegin{feature_gap_angle}
+      \cgalParamDescription{the dihedral angle in degrees above which an edge can close a gap in a feature
+                            line (see `detect_feature_edges()`)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`feature_angle - 10`}
+    \cgalParamNEnd
+    \cgalParamNBegin{maximum_running_time}
+      \cgalParamDescription{a time limit in seconds for the whole run. The stages that can stop early get a
+                            share of the time left when they start: the layout rounds (fewer paths: patches
+                            may be less regular), the quantization solves (the best solution found, or the
+                            solver-free fallback) and the smoothing iterations. The other stages always run
+                            to their end, so a limit shorter than they take is exceeded. The report's
+                            `"time_limit"` record says whether the limit was met and what each stage gave up.
+                            With a limit the output depends on the speed and load of the machine.}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0` (no limit: the output depends on the input and the parameters only)}
+    \cgalParamNEnd
+    \cgalParamNBegin{callback}
+      \cgalParamDescription{called with the name of each stage when it starts}
+      \cgalParamType{a callable `void(const std::string&)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{verbose}
+      \cgalParamDescription{whether the stages print their progress and timing to `std::cerr`}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  @return the report of every stage (key: the stage name) and the total `"seconds"`
+  @throws std::invalid_argument or std::runtime_error with the reason when a stage fails
+*/
+template <typename TriangleMesh, typename QuadMesh, typename NamedParameters = parameters::Default_named_parameters>
+Report quad_remesh(const TriangleMesh& tmesh, QuadMesh& qmesh, const NamedParameters& np = parameters::default_values())
+{
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type K;
+  typedef CGAL::Surface_mesh<typename K::Point_3> Mesh;
+  // the output of a Surface_mesh run, copied into `qmesh` if it is of another type
+  auto run = [&](const Mesh& input) -> Report {
+    if constexpr(std::is_same<QuadMesh, Mesh>::value)
+      return internal::quad_remesh_on_surface_meshes(input, qmesh, np);
+    else
+    {
+      Mesh quads;
+      Report report = internal::quad_remesh_on_surface_meshes(input, quads, np);
+      CGAL::clear(qmesh);
+      CGAL::copy_face_graph(quads, qmesh);
+      return report;
+    }
+  };
+  if constexpr(std::is_same<TriangleMesh, Mesh>::value)
+    return run(tmesh);
+  else
+  {
+    Mesh input;
+    CGAL::copy_face_graph(tmesh, input);
+    return run(input);
+  }
 }
 
 } // namespace Quad_remeshing
