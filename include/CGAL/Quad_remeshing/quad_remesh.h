@@ -49,10 +49,6 @@ void collect_garbage(Mesh&) {}
 template <typename P>
 void collect_garbage(CGAL::Surface_mesh<P>& sm) { sm.collect_garbage(); }
 
-} // namespace internal
-
-namespace internal {
-
 // quad_remesh() on Surface_mesh input and output (every stage is run on a Surface_mesh, whose indices
 // stay dense once its garbage is collected)
 template <typename TriangleMesh, typename QuadMesh, typename NamedParameters>

@@ -101,8 +101,9 @@ struct Tip_snapping_statistics
   not move the vertices of `fixed`), and with them every vertex farther than `tip_smoothing_rings` rings
   from all of them, so that only the quads around the tips change. The copy is kept if the largest
   distance between the input and the quads, both ways (input vertices to the quads; quad vertices,
-  centres, edge midpoints and triangle centroids to the input), falls and no more quads are inverted (scaled Jacobian <= 0) than in
-  `qmesh`; if not, the round is tried again with tips two edge lengths apart.
+  centres, edge midpoints and triangle centroids to the input), falls and no more quads are inverted
+  (scaled Jacobian <= 0) than in `qmesh`; if not, the round is tried again with tips two edge lengths
+  apart.
   Then the next round (at most `max_tip_rounds`) does the same on the kept
   copy, with the tips of the rounds before still held: an ear is a blade rather than a point, and the
   points of its rim near the tip taken first, left out then, get vertices of their own (camelhead, qmeval:
