@@ -269,12 +269,11 @@ BOOST_AUTO_TEST_CASE(patch_with_a_slit_is_cut_open)
   const std::vector<Grid_pattern> patterns(1, Grid_pattern(12, 4));
 
   // cut open along the slit, the slit's base and middle vertices have two copies, its tip one
-  std::set<std::pair<std::size_t, std::size_t>> cut_edges;
+  QR::internal::Cut_open_patch<Mesh>::Edge_set cut_edges;
   for(const auto& side : patch.sides)
     for(const SA& sa : side)
       for(std::size_t k = 0; k + 1 < layout.arcs[sa.arc].vertices.size(); ++k)
-        cut_edges.insert(QR::internal::Cut_open_patch<Mesh>::key(layout.arcs[sa.arc].vertices[k],
-                                                                 layout.arcs[sa.arc].vertices[k + 1]));
+        cut_edges.insert(t.edge(t.halfedge(layout.arcs[sa.arc].vertices[k], layout.arcs[sa.arc].vertices[k + 1])));
   const QR::internal::Cut_open_patch<Mesh> cut(t, patch.faces, cut_edges);
   BOOST_TEST(cut.vertex_of.size() == num_vertices(t) + 2u);
   std::size_t left_u, left_w, right_u, right_w;

@@ -275,13 +275,16 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     }
 
     // the patch's triangles as a local indexed mesh, cut open along the patch's sides
-    std::set<std::pair<std::size_t, std::size_t>> cut_edges;
+    typename internal::Cut_open_patch<TriangleMesh>::Edge_set cut_edges;
     for(const auto& side : patch.sides)
       for(const Side_arc& sa : side)
       {
         const auto& chain = layout.arcs[sa.arc].vertices;
         for(std::size_t q = 0; q + 1 < chain.size(); ++q)
-          cut_edges.insert(internal::Cut_open_patch<TriangleMesh>::key(chain[q], chain[q + 1]));
+        {
+          const auto h = halfedge(chain[q], chain[q + 1], tmesh);
+          if(h.second) cut_edges.insert(edge(h.first, tmesh));
+        }
       }
     const internal::Cut_open_patch<TriangleMesh> cut(tmesh, patch.faces, cut_edges);
     internal::Patch_map map;

@@ -9,15 +9,16 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <numeric>
-#include <set>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -40,15 +41,17 @@ class Cut_open_patch
   typedef typename GT::face_descriptor face_descriptor;
 
 public:
-  /// `cut_edges`: the patch's boundary edges, as (smaller, larger) pairs of `std::size_t(vertex)`
-  Cut_open_patch(const TriangleMesh& tm, const std::vector<face_descriptor>& faces,
-                 const std::set<std::pair<std::size_t, std::size_t>>& cut_edges)
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef std::unordered_set<edge_descriptor, boost::hash<edge_descriptor>> Edge_set;
+
+  /// `cut_edges`: the patch's boundary edges
+  Cut_open_patch(const TriangleMesh& tm, const std::vector<face_descriptor>& faces, const Edge_set& cut_edges)
     : tm_(tm)
   {
     corners_.resize(faces.size());
     for(std::size_t i = 0; i < faces.size(); ++i)
     {
-      face_index_.emplace(std::size_t(faces[i]), i);
+      face_index_.emplace(faces[i], i);
       int c = 0;
       for(halfedge_descriptor h : halfedges_around_face(halfedge(faces[i], tm), tm))
       {
@@ -75,10 +78,10 @@ public:
       {
         const face_descriptor g = face(opposite(h, tm), tm);
         if(g == GT::null_face()) continue;
-        const auto it = face_index_.find(std::size_t(g));
+        const auto it = face_index_.find(g);
         if(it == face_index_.end()) continue;
+        if(cut_edges.count(edge(h, tm))) continue;
         const vertex_descriptor s = source(h, tm), t = target(h, tm);
-        if(cut_edges.count(key(s, t))) continue;
         unite(slot(i, s), slot(it->second, s));
         unite(slot(i, t), slot(it->second, t));
       }
@@ -100,13 +103,6 @@ public:
       for(std::size_t c = 0; c < 3; ++c) triangles[i][c] = local_of_slot_[3 * i + c];
   }
 
-  /// the (smaller, larger) key of the edge between `u` and `w`
-  static std::pair<std::size_t, std::size_t> key(vertex_descriptor u, vertex_descriptor w)
-  {
-    const std::size_t a = std::size_t(u), b = std::size_t(w);
-    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
-  }
-
   /// The local copies of `u` and `w` seen from the patch triangle on the left of the mesh edge
   /// from `u` to `w`; false if that triangle is not in the patch.
   bool left_of(vertex_descriptor u, vertex_descriptor w, std::size_t& local_u, std::size_t& local_w) const
@@ -115,7 +111,7 @@ public:
     if(!h.second) return false;
     const face_descriptor f = face(h.first, tm_);
     if(f == GT::null_face()) return false;
-    const auto it = face_index_.find(std::size_t(f));
+    const auto it = face_index_.find(f);
     if(it == face_index_.end()) return false;
     local_u = local_of_slot_[slot(it->second, u)];
     local_w = local_of_slot_[slot(it->second, w)];
@@ -134,7 +130,7 @@ private:
   }
 
   const TriangleMesh& tm_;
-  std::unordered_map<std::size_t, std::size_t> face_index_;
+  std::unordered_map<face_descriptor, std::size_t, boost::hash<face_descriptor>> face_index_;
   std::vector<std::array<vertex_descriptor, 3>> corners_;
   std::vector<std::size_t> local_of_slot_;
 };

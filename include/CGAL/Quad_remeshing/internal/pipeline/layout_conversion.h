@@ -70,7 +70,8 @@ struct Quadrangulation_layout
       return it->second;
     };
     auto length = [&](halfedge_descriptor h) {
-      return std::sqrt(CGAL::to_double(CGAL::squared_distance(tm.point(source(h, tm)), tm.point(target(h, tm)))));
+      return std::sqrt(CGAL::to_double(
+        CGAL::squared_distance(get(CGAL::vertex_point, tm, source(h, tm)), get(CGAL::vertex_point, tm, target(h, tm)))));
     };
     // splits[a]: split after these halfedge indices (the vertex target(halfedges[k]))
     std::vector<std::set<std::size_t>> splits(arcs.size());
@@ -210,7 +211,8 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
 {
   if(!(quad_edge_length > 0)) throw std::invalid_argument("quantization_problem: the quad edge length must be positive");
   auto length = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
-    return std::sqrt(CGAL::to_double(CGAL::squared_distance(tm.point(source(h, tm)), tm.point(target(h, tm)))));
+    return std::sqrt(CGAL::to_double(
+      CGAL::squared_distance(get(CGAL::vertex_point, tm, source(h, tm)), get(CGAL::vertex_point, tm, target(h, tm)))));
   };
   // the global length over the local one; exactly 1 without sizing (l * 1. == l: uniform targets unchanged)
   auto refinement = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
