@@ -12,6 +12,7 @@
 #include <CGAL/Quad_remeshing/internal/bbox_diagonal.h>
 #include <CGAL/Quad_remeshing/internal/pipeline/quad_sizing.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,10 +70,7 @@ struct Quadrangulation_layout
       reversed = true;
       return it->second;
     };
-    auto length = [&](halfedge_descriptor h) {
-      return std::sqrt(CGAL::to_double(
-        CGAL::squared_distance(get(CGAL::vertex_point, tm, source(h, tm)), get(CGAL::vertex_point, tm, target(h, tm)))));
-    };
+    auto length = [&](halfedge_descriptor h) { return CGAL::to_double(Polygon_mesh_processing::edge_length(h, tm)); };
     // splits[a]: split after these halfedge indices (the vertex target(halfedges[k]))
     std::vector<std::set<std::size_t>> splits(arcs.size());
     std::vector<std::vector<std::size_t>> corners_of(patches.size()); // loop positions i: corner at target(L[i])
@@ -211,8 +209,7 @@ Side_quantization_problem quantization_problem(const TriangleMesh& tm, const Lay
 {
   if(!(quad_edge_length > 0)) throw std::invalid_argument("quantization_problem: the quad edge length must be positive");
   auto length = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
-    return std::sqrt(CGAL::to_double(
-      CGAL::squared_distance(get(CGAL::vertex_point, tm, source(h, tm)), get(CGAL::vertex_point, tm, target(h, tm)))));
+    return CGAL::to_double(Polygon_mesh_processing::edge_length(h, tm));
   };
   // the global length over the local one; exactly 1 without sizing (l * 1. == l: uniform targets unchanged)
   auto refinement = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
