@@ -77,7 +77,7 @@ const char* usage_text =
   "                   [--until STAGE] [--dump DIR]\n"
   "                   [--report FILE.json] [--seed N] [--threads N] [--time-limit S]\n"
   "                   [--html FILE.html] [--adaptive-remeshing] [--no-hold-sharp-edges]\n"
-  "                   [--refine-layout] [--refine-far-regions]\n"
+  "                   [--no-refine-layout] [--refine-far-regions]\n"
   "                   [--verbose | --quiet] [--help]\n"
   "\n"
   "Turns the triangle mesh INPUT (OFF, OBJ, PLY or STL) into a pure-quad mesh that keeps its feature\n"
@@ -132,8 +132,9 @@ const char* usage_text =
   "                       the remeshing leaves farther than 70% of 0.002 times the diagonal from the\n"
   "                       input (thin tips, tight bends) (experimental: the output gets closer to the\n"
   "                       input on some meshes, farther on others)\n"
-  "  --refine-layout      refine the triangles where a layout patch stays non-convex for want of a\n"
-  "                       vertex, and cut those patches again (experimental)\n"
+  "  --no-refine-layout   leave the triangles as they are where a layout patch stays non-convex for\n"
+  "                       want of a vertex (by default they get one, and those patches are cut again;\n"
+  "                       --refine-layout, the default, is accepted too)\n"
   "  --no-hold-sharp-edges let the uniform remeshing pass smooth away the sharp edges that are not\n"
   "                       features and the long creases (held in place by default)\n"
   "  --verbose            print progress of every stage\n"
@@ -158,7 +159,7 @@ struct Options
          component_resolution = QR::internal::default_component_resolution;
   long faces = 0;
   unsigned seed = 0, threads = (std::max)(1u, std::thread::hardware_concurrency());
-  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true, refine_layout = false,
+  bool verbose = false, quiet = false, adaptive_remeshing = false, hold_sharp_edges = true, refine_layout = true,
        refine_far_regions = false;
 
   // the sizing tolerance in use: as given, else 0 with --faces (a count of quads asks for the uniform
@@ -237,6 +238,7 @@ Options parse_arguments(int argc, char** argv, bool& help)
     else if(a == "--verbose" || a == "-v") o.verbose = true;
     else if(a == "--adaptive-remeshing") o.adaptive_remeshing = true;
     else if(a == "--refine-layout") o.refine_layout = true;
+    else if(a == "--no-refine-layout") o.refine_layout = false;
     else if(a == "--refine-far-regions") o.refine_far_regions = true;
     else if(a == "--no-hold-sharp-edges") o.hold_sharp_edges = false;
     else if(a == "--quiet" || a == "-q") o.quiet = true;
@@ -486,7 +488,8 @@ private:
                                               budget_.stage_limit(QR::internal::layout_time_share)),
                                             QR::parameters::number_of_threads(opt_.threads));
     auto st = QR::trace_patch_layout(state_.tmesh, state_.feature, *state_.layout, np);
-    // on request, where patches stay non-convex for want of a vertex, the mesh is refined and the layout repaired
+    // where patches stay non-convex for want of a vertex, the mesh is refined and the layout repaired (unless
+    // --no-refine-layout)
     std::optional<QR::Refine_patch_layout_statistics> rs;
     if(opt_.refine_layout)
       rs = QR::refine_patch_layout(state_.tmesh, state_.feature, state_.field, state_.singularity, state_.layout, st, np);

@@ -63,6 +63,14 @@ QR::internal::Tip_snapping_statistics snap_tips(const Mesh& input, const InputFe
   return QR::internal::snap_quads_to_input_tips(input, quads, qfeature, 0.1, smooth, keep, false);
 }
 
+// an edge map of `m` that is true on its border edges (the constrained edges of the tip tests)
+auto border_edge_map(const Mesh& m)
+{
+  auto map = get(CGAL::dynamic_edge_property_t<bool>(), m);
+  for(auto e : m.edges()) put(map, e, m.is_border(e));
+  return map;
+}
+
 // n x n unit quads on the plane z = 0, the grid vertex (i, j) at `place(i, j)`
 template <typename Place>
 Mesh quad_grid(int n, const Place& place)
@@ -263,13 +271,13 @@ BOOST_AUTO_TEST_CASE(spot_has_no_folded_quad)
   BOOST_TEST(qr_test::flipped_over_quads(q) == 0u);
 }
 
-// bunny with `layout_refinement`: the one invalid patch of its layout (a left turn beside a held crease's
-// tip) is cut after the refinement, the layout stage says so, and the quads are valid
+// bunny and `layout_refinement` (on by default): the one invalid patch of its layout (a left turn beside a
+// held crease's tip) is cut after the refinement, the layout stage says so, and the quads are valid
 BOOST_AUTO_TEST_CASE(bunny_layout_refinement)
 {
   Mesh t, q, q_default;
   QR::read_and_repair(qr_test::data_file("bunny.off"), t);
-  const QR::Report r = QR::quad_remesh(t, q, QR::parameters::layout_refinement(true));
+  const QR::Report r = QR::quad_remesh(t, q); // (on by default)
   const QR::Report& layout = *r.find("layout");
   BOOST_TEST_REQUIRE(layout.find("refinement") != nullptr);
   const QR::Report& refinement = *layout.find("refinement");
@@ -282,8 +290,8 @@ BOOST_AUTO_TEST_CASE(bunny_layout_refinement)
   BOOST_TEST(quality.valid);
   BOOST_TEST(quality.non_positive_scaled_jacobian == 0u);
   BOOST_TEST(q.is_valid(false));
-  // off by default: no refinement record, another layout
-  const QR::Report d = QR::quad_remesh(t, q_default);
+  // turned off: no refinement record, and the patch stays invalid
+  const QR::Report d = QR::quad_remesh(t, q_default, QR::parameters::layout_refinement(false));
   BOOST_TEST(d.find("layout")->find("refinement") == nullptr);
   BOOST_TEST(d.find("layout")->find("valid_patches")->number() + 1. == d.find("layout")->find("patches")->number());
 }
@@ -450,11 +458,9 @@ BOOST_AUTO_TEST_CASE(tips_left_by_a_round_get_the_next)
   typedef qr_test::Point_3 P;
   // the input on [0,8]^2 with the two spikes raised; the quads: 8 x 8 unit squares on the plane
   const Mesh input = plane_with_spikes(8, [](int i, int j) { return i == 8 && j == 8 ? 1. : (i == 9 && j == 8 ? 0.9 : 0.); });
-  auto input_feature = get(CGAL::dynamic_edge_property_t<bool>(), input);
-  for(auto e : input.edges()) put(input_feature, e, input.is_border(e));
-  Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, 0.); });
-  auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), quads);
-  for(auto e : quads.edges()) put(qfeature, e, quads.is_border(e));
+  const auto input_feature = border_edge_map(input);
+  const Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, 0.); });
+  const auto qfeature = border_edge_map(quads);
 
   std::size_t smoothings = 0;
   Mesh result;
@@ -471,6 +477,46 @@ BOOST_AUTO_TEST_CASE(tips_left_by_a_round_get_the_next)
   };
   BOOST_TEST(has_vertex_at(P(4., 4., 1.))); // A, taken in the first round and held since
   BOOST_TEST(result.number_of_faces() == quads.number_of_faces());
+}
+
+// A tip whose quads, once it is taken, end farther from the input than it was from the quads is left out,
+// and the round is tried again with the other tips (elephant: a quad vertex put onto a toe's rim pulled
+// the quads beside it farther off the toe than the rim vertex was from them). Here the smoothing
+// hook lifts a neighbour of the vertex put onto spike B by 2 (and holds it there); A is taken alone.
+BOOST_AUTO_TEST_CASE(tips_that_pull_their_quads_off_are_dropped)
+{
+  typedef qr_test::Point_3 P;
+  const Mesh input = plane_with_spikes(8, [](int i, int j) { return i == 4 && j == 4 ? 1. : (i == 12 && j == 12 ? 0.8 : 0.); });
+  const auto input_feature = border_edge_map(input);
+  const Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, 0.); });
+  const auto qfeature = border_edge_map(quads);
+  std::size_t pulled = 0;
+  auto pull = [&](Mesh& m, const auto& held) {
+    for(auto v : m.vertices())
+      if(m.point(v) == P(6., 6., 0.8)) {
+        const auto w = m.source(m.halfedge(v));
+        m.point(w) = P(m.point(w).x(), m.point(w).y(), m.point(w).z() + 2.);
+        put(held, w, true);
+        ++pulled;
+      }
+  };
+  Mesh result;
+  const QR::internal::Tip_snapping_statistics st = snap_tips(input, input_feature, quads, qfeature, pull, result);
+  BOOST_TEST(pulled == 1u);
+  BOOST_TEST(st.dropped == 1u);
+  BOOST_TEST(st.kept);
+  BOOST_TEST(st.distance_before == 1., boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(st.distance_after < 0.8 + 1e-9); // B is left out (the smoothing may bring quads up its sides)
+  bool at_a = false, at_b = false;
+  double highest = 0.;
+  for(auto v : result.vertices()) {
+    at_a = at_a || result.point(v) == P(2., 2., 1.);
+    at_b = at_b || result.point(v) == P(6., 6., 0.8);
+    highest = (std::max)(highest, result.point(v).z());
+  }
+  BOOST_TEST(at_a);
+  BOOST_TEST(!at_b);
+  BOOST_TEST(highest == 1.);
 }
 
 // The distance of the quads to the input is measured at their vertices too: a grid of unit quads over a

@@ -120,9 +120,10 @@ Report quad_remesh_on_surface_meshes(const TriangleMesh& tmesh, QuadMesh& qmesh,
     QRP::combine(CGAL::parameters::verbose(verbose).maximum_running_time(budget.stage_limit(internal::layout_time_share)),
                  QRP::number_of_threads(threads));
   Trace_patch_layout_statistics layout_stats = trace_patch_layout(tm, feature, *layout_ptr, layout_np);
-  // on request, where patches stay non-convex for want of a vertex, the mesh is refined and the layout repaired
+  // where patches stay non-convex for want of a vertex, the mesh is refined and the layout repaired (unless
+  // turned off)
   std::optional<Refine_patch_layout_statistics> refinement;
-  if(choose_parameter(get_parameter(np, internal_np::layout_refinement), false))
+  if(choose_parameter(get_parameter(np, internal_np::layout_refinement), true))
     refinement = refine_patch_layout(tm, feature, field, singularity, layout_ptr, layout_stats, layout_np);
   layout_ptr->release_direction_graph(); // (no more paths are traced)
   const Layout& layout = *layout_ptr;
@@ -243,8 +244,9 @@ Report quad_remesh_on_surface_meshes(const TriangleMesh& tmesh, QuadMesh& qmesh,
 
   turns a triangle mesh into a pure-quad mesh that reproduces its feature lines, running every stage
   with its defaults: `detect_feature_edges()`, `remesh_for_quadrangulation()` (on a copy of `tmesh`),
-  `compute_cross_field()` and `compute_cross_field_singularities()`, `Patch_layout` and
-  `trace_patch_layout()`, `quantize_patch_sides()`, `quadrangulate_polygon()` per patch,
+  `compute_cross_field()` and `compute_cross_field_singularities()`, `Patch_layout`,
+  `trace_patch_layout()` and `refine_patch_layout()` (unless `layout_refinement` is false),
+  `quantize_patch_sides()`, `quadrangulate_polygon()` per patch,
   `assemble_quad_mesh()` and `smooth_quad_mesh()`. Where the patterns of some patches cannot be glued
   (`Quad_assembly_conflict`), the arcs of those patches get more edges and the counts are solved again
   (at most 4 times; the `quadrangulate` record's `count_repairs` and `repaired_patches` say how often
@@ -364,14 +366,15 @@ Report quad_remesh_on_surface_meshes(const TriangleMesh& tmesh, QuadMesh& qmesh,
     \cgalParamNBegin{layout_refinement}
       \cgalParamDescription{whether `refine_patch_layout()` runs after `trace_patch_layout()`: the triangle mesh
                             gets a vertex where a cut across a thin wedge needs one, and the patches that stay
-                            non-convex for want of it are cut. Off by default: it lowers the number of invalid
-                            patches (54 -> 24 on the 22 development meshes), raises truck's mean scaled
-                            Jacobian from 0.78 to 0.81 and leaves no quad flipped over (truck has 6 without
-                            it), but the quantization then lands elsewhere on elephant, whose output goes
-                            from 0.47% to 0.56% of the diagonal from the input (qmeval; camelhead 0.44% ->
-                            0.50%)}
+                            non-convex for want of it are cut. On the 22 development meshes it leaves 24
+                            invalid patches instead of 54 (bunny and fertility none), raises truck's mean
+                            scaled Jacobian from 0.78 to 0.81 and leaves no quad flipped over (truck has 6
+                            without it); the layouts it changes move the quantization, which lands elsewhere
+                            on elephant, whose output goes from 0.45% to 0.53% of the diagonal from the input
+                            (qmeval; its farthest point lies where the remeshed triangles are themselves 0.42%
+                            from the input)}
       \cgalParamType{Boolean}
-      \cgalParamDefault{`false`}
+      \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{hold_sharp_edges}
       \cgalParamDescription{whether `remesh_for_quadrangulation()` holds the sharp edges that are not features in

@@ -217,7 +217,7 @@ bool move_keeps_orientation(const TriangleMesh& tm, const Layout& layout, typena
   the thin wedges, so the surface barely changes.
 
   Every patch that was valid stays valid, and the number of invalid patches does not grow (the repair's
-  rule). On the 22 development meshes (`quad_remesh()` with `layout_refinement`), 54 invalid patches of 8677
+  rule). On the 22 development meshes (`quad_remesh()`, which runs it by default), 54 invalid patches of 8677
   become 24: truck 34 -> 13 (in two passes), elephant 7 -> 3, rocker_arm 7 -> 5, camelhead 3 -> 2, bunny
   and fertility 1 -> 0; spot keeps its one (no landing point qualifies). Of the 24 left, 6 have a sharp
   U-turn (21 to 43 degrees: two paths, or a path and a line, meeting at a sharp angle) and 3 a U-turn of

@@ -46,6 +46,8 @@ constexpr unsigned tip_smoothing_iterations = 10;
 constexpr unsigned tip_smoothing_rings = 6;
 // at most this many rounds of tips, each on the quads the round before kept
 constexpr unsigned max_tip_rounds = 3;
+// a round is tried again at most this many times without the tips whose quads around strayed from the input
+constexpr unsigned max_tip_retries = 2;
 
 // Copies `from` into the empty `to`, and the flags of `from_feature` into `to_feature`. (No mesh holding
 // a dynamic property map that is used afterwards is cleared: CGAL::clear() removes the property maps of
@@ -66,6 +68,7 @@ struct Tip_snapping_statistics
 {
   std::size_t candidates = 0; // input vertices farther than the tolerance from the quads
   std::size_t snapped = 0;    // quad vertices put onto one of them (in every round tried)
+  std::size_t dropped = 0;    // tips left out because the quads around them strayed from the input
   std::size_t rounds = 0;     // rounds kept
   bool smoothed_all = false;  // whether the last smoothing of all the quads (tips held) was kept
   bool kept = false;          // whether the snapped, smoothed quads replaced the old ones
@@ -77,6 +80,7 @@ struct Tip_snapping_statistics
     Report r = Report::object();
     r["candidates"] = candidates;
     r["snapped"] = snapped;
+    r["dropped"] = dropped;
     r["rounds"] = rounds;
     r["smoothed_all"] = smoothed_all;
     r["kept"] = kept;
@@ -103,7 +107,11 @@ struct Tip_snapping_statistics
   distance between the input and the quads, both ways (input vertices to the quads; quad vertices,
   centres, edge midpoints and triangle centroids to the input), falls and no more quads are inverted
   (scaled Jacobian <= 0) than in `qmesh`; if not, the round is tried again with tips two edge lengths
-  apart.
+  apart. Before that, each tip is judged on its own: the samples of the quads (as above) farther than
+  `tolerance` from the input belong to the nearest tip within `tip_smoothing_rings` mean quad edge lengths;
+  a tip whose samples end farther from the input than the tip itself was from the quads and than its
+  samples were before the round pulled its quads off the surface, and the round is tried again without it
+  (at most `max_tip_retries` times, and only while other tips are left).
   Then the next round (at most `max_tip_rounds`) does the same on the kept
   copy, with the tips of the rounds before still held: an ear is a blade rather than a point, and the
   points of its rim near the tip taken first, left out then, get vertices of their own (camelhead, qmeval:
@@ -158,6 +166,27 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     });
     return worst;
   };
+  // for each of `tips`, the largest distance to the input of the samples of `m` (as in `measure`) farther
+  // than `tolerance` whose nearest tip it is, within `radius`
+  auto stray_near_tips = [&](const QuadMesh& m, const std::vector<Point>& tips, double radius) {
+    std::vector<double> worst(tips.size(), 0.);
+    std::vector<Point> points;
+    quality::Index_polygons polygons;
+    quality::mesh_to_soup(m, get(CGAL::vertex_point, m), points, polygons);
+    const std::vector<Triangle> triangles = quality::triangulate_soup<K>(points, polygons);
+    quality::for_each_soup_sample(points, polygons, triangles, [&](const Point& s) {
+      std::size_t nearest = tips.size();
+      double nearest_d = radius * radius;
+      for(std::size_t i = 0; i < tips.size(); ++i) {
+        const double d = CGAL::to_double(CGAL::squared_distance(s, tips[i]));
+        if(d < nearest_d) { nearest_d = d; nearest = i; }
+      }
+      if(nearest == tips.size()) return;
+      const double d = std::sqrt(CGAL::to_double(surface.squared_distance(s)));
+      if(d > tolerance) worst[nearest] = (std::max)(worst[nearest], d);
+    });
+    return worst;
+  };
   std::vector<std::pair<double, Point>> far;
   st.distance_before = st.distance_after = measure(qmesh, &far);
   st.candidates = far.size();
@@ -188,6 +217,8 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   const std::size_t inverted_before = quad_mesh_quality(qmesh).non_positive_scaled_jacobian;
   std::unique_ptr<Round_mesh> best; // the last round kept
   std::set<Point> held;             // the tips of the rounds kept
+  std::set<Point> dropped;          // the tips whose quads strayed from the input
+  unsigned retries = 0;             // of the current round
   double best_distance = st.distance_before;
   // a round first takes tips one mean quad edge length apart; if that is not closer, two
   unsigned round = 0;
@@ -238,11 +269,13 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     }
 
     std::vector<Point> tips;
+    std::vector<double> tip_distances; // from the quads before the round
     std::vector<qvertex> snapped_vertices;
     for(const auto& candidate : far)
     {
       if(held.size() + tips.size() >= max_tip_snaps) break;
       const Point& tip = candidate.second;
+      if(dropped.count(tip) > 0) continue;
       bool close = false;
       for(const Point& t : tips)
         if(CGAL::to_double(CGAL::squared_distance(t, tip)) < separation * separation) { close = true; break; }
@@ -261,6 +294,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
       put(cvpm, movable[best_vertex].first, tip);
       put(fixed, movable[best_vertex].first, true);
       tips.push_back(tip);
+      tip_distances.push_back(candidate.first);
     }
     st.snapped += tips.size();
     if(tips.empty()) break; // (then none at a larger separation either)
@@ -286,6 +320,28 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     }
     smooth(copy, copy_feature, fixed);
 
+    // the tips whose quads around now stray farther from the input than before are left out
+    if(retries < max_tip_retries)
+    {
+      const double radius = 0.5 * reach * double(tip_smoothing_rings);
+      const std::vector<double> stray_before = stray_near_tips(best ? best->mesh : qmesh, tips, radius);
+      const std::vector<double> stray_after = stray_near_tips(copy, tips, radius);
+      std::vector<Point> strayed;
+      for(std::size_t i = 0; i < tips.size(); ++i)
+        if(stray_after[i] > (std::max)(stray_before[i], tip_distances[i])) strayed.push_back(tips[i]);
+      if(!strayed.empty() && strayed.size() < tips.size())
+      {
+        if(verbose)
+          std::cerr << "[tips] round " << round + 1 << (sparse ? " (sparse)" : "") << ": the quads around "
+                    << strayed.size() << " of " << tips.size()
+                    << " tips strayed from the input; tried again without them" << std::endl;
+        dropped.insert(strayed.begin(), strayed.end());
+        st.dropped += strayed.size();
+        ++retries;
+        continue;
+      }
+    }
+
     std::vector<std::pair<double, Point>> next_far;
     const double after = measure(copy, &next_far);
     const std::size_t inverted_after = quad_mesh_quality(copy).non_positive_scaled_jacobian;
@@ -296,6 +352,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
                 << " quad vertices put onto tips: distance " << best_distance << " -> " << after << ", "
                 << inverted_after << " quads inverted (" << inverted_before << " before)"
                 << (closer ? ", kept" : ", not kept") << std::endl;
+    retries = 0;
     if(!closer)
     {
       if(sparse) break;
