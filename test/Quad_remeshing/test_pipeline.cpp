@@ -526,11 +526,9 @@ BOOST_AUTO_TEST_CASE(tips_measure_quad_vertices)
 {
   typedef qr_test::Point_3 P;
   const Mesh input = plane_with_spikes(8, [](int, int) { return 0.; });
-  auto input_feature = get(CGAL::dynamic_edge_property_t<bool>(), input);
-  for(auto e : input.edges()) put(input_feature, e, input.is_border(e));
+  const auto input_feature = border_edge_map(input);
   Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, i == 4 && j == 4 ? 0.5 : 0.); });
-  auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), quads);
-  for(auto e : quads.edges()) put(qfeature, e, quads.is_border(e));
+  const auto qfeature = border_edge_map(quads);
   Mesh result;
   const QR::internal::Tip_snapping_statistics st =
     snap_tips(input, input_feature, quads, qfeature, [](const Mesh&, const auto&) {}, result);
@@ -548,8 +546,7 @@ BOOST_AUTO_TEST_CASE(tips_smooth_the_quads_around_them)
 {
   typedef qr_test::Point_3 P;
   const Mesh input = plane_with_spikes(16, [](int i, int j) { return i == 16 && j == 16 ? 1. : 0.; });
-  auto input_feature = get(CGAL::dynamic_edge_property_t<bool>(), input);
-  for(auto e : input.edges()) put(input_feature, e, input.is_border(e));
+  const auto input_feature = border_edge_map(input);
   std::vector<std::pair<P, int>> jittered; // the inner vertices and their grid distance from the spike
   Mesh quads = quad_grid(16, [&](int i, int j) {
     const bool inner = i > 0 && i < 16 && j > 0 && j < 16;
@@ -557,8 +554,7 @@ BOOST_AUTO_TEST_CASE(tips_smooth_the_quads_around_them)
     if(inner) jittered.emplace_back(p, std::abs(i - 8) + std::abs(j - 8));
     return p;
   });
-  auto qfeature = get(CGAL::dynamic_edge_property_t<bool>(), quads);
-  for(auto e : quads.edges()) put(qfeature, e, quads.is_border(e));
+  const auto qfeature = border_edge_map(quads);
   // the grid distance from the spike of each vertex left free by each smoothing
   std::vector<std::vector<int>> free_distances;
   auto record = [&](const Mesh& m, const auto& held) {

@@ -145,11 +145,22 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
 
   // the largest distance both ways between `input` and `m`, and the input vertices farther than
   // `tolerance` from `m` with their distances
-  auto measure = [&](const QuadMesh& m, std::vector<std::pair<double, Point>>* far) {
+  // a quad mesh as the measures below see it: its polygon soup and that soup's triangles (made once per
+  // mesh, for both measures)
+  struct Soup
+  {
     std::vector<Point> points;
     quality::Index_polygons polygons;
-    quality::mesh_to_soup(m, get(CGAL::vertex_point, m), points, polygons);
-    const std::vector<Triangle> triangles = quality::triangulate_soup<K>(points, polygons);
+    std::vector<Triangle> triangles;
+  };
+  auto soup_of = [](const QuadMesh& m) {
+    Soup s;
+    quality::mesh_to_soup(m, get(CGAL::vertex_point, m), s.points, s.polygons);
+    s.triangles = quality::triangulate_soup<K>(s.points, s.polygons);
+    return s;
+  };
+  auto measure = [&](const Soup& m, std::vector<std::pair<double, Point>>* far) {
+    const std::vector<Triangle>& triangles = m.triangles;
     double worst = 0.;
     if(triangles.empty()) return worst;
     Quad_tree quads(triangles.begin(), triangles.end());
@@ -161,20 +172,16 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
       worst = (std::max)(worst, d);
       if(far != nullptr && d > tolerance) far->emplace_back(d, get(ivpm, v));
     }
-    quality::for_each_soup_sample(points, polygons, triangles, [&](const Point& s) {
+    quality::for_each_soup_sample(m.points, m.polygons, triangles, [&](const Point& s) {
       worst = (std::max)(worst, std::sqrt(CGAL::to_double(surface.squared_distance(s))));
     });
     return worst;
   };
   // for each of `tips`, the largest distance to the input of the samples of `m` (as in `measure`) farther
   // than `tolerance` whose nearest tip it is, within `radius`
-  auto stray_near_tips = [&](const QuadMesh& m, const std::vector<Point>& tips, double radius) {
+  auto stray_near_tips = [&](const Soup& m, const std::vector<Point>& tips, double radius) {
     std::vector<double> worst(tips.size(), 0.);
-    std::vector<Point> points;
-    quality::Index_polygons polygons;
-    quality::mesh_to_soup(m, get(CGAL::vertex_point, m), points, polygons);
-    const std::vector<Triangle> triangles = quality::triangulate_soup<K>(points, polygons);
-    quality::for_each_soup_sample(points, polygons, triangles, [&](const Point& s) {
+    quality::for_each_soup_sample(m.points, m.polygons, m.triangles, [&](const Point& s) {
       std::size_t nearest = tips.size();
       double nearest_d = radius * radius;
       for(std::size_t i = 0; i < tips.size(); ++i) {
@@ -188,7 +195,8 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     return worst;
   };
   std::vector<std::pair<double, Point>> far;
-  st.distance_before = st.distance_after = measure(qmesh, &far);
+  Soup start_soup = soup_of(qmesh); // of the quads a round starts from (`qmesh`, then the last round kept)
+  st.distance_before = st.distance_after = measure(start_soup, &far);
   st.candidates = far.size();
   if(far.empty()) { st.seconds = timer.time(); return st; }
   // farthest first; ties by position, so that the order does not depend on the sort
@@ -319,13 +327,14 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
         if(near.count(v) == 0) put(fixed, v, true);
     }
     smooth(copy, copy_feature, fixed);
+    Soup copy_soup = soup_of(copy);
 
     // the tips whose quads around now stray farther from the input than before are left out
     if(retries < max_tip_retries)
     {
       const double radius = 0.5 * reach * double(tip_smoothing_rings);
-      const std::vector<double> stray_before = stray_near_tips(best ? best->mesh : qmesh, tips, radius);
-      const std::vector<double> stray_after = stray_near_tips(copy, tips, radius);
+      const std::vector<double> stray_before = stray_near_tips(start_soup, tips, radius);
+      const std::vector<double> stray_after = stray_near_tips(copy_soup, tips, radius);
       std::vector<Point> strayed;
       for(std::size_t i = 0; i < tips.size(); ++i)
         if(stray_after[i] > (std::max)(stray_before[i], tip_distances[i])) strayed.push_back(tips[i]);
@@ -343,7 +352,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     }
 
     std::vector<std::pair<double, Point>> next_far;
-    const double after = measure(copy, &next_far);
+    const double after = measure(copy_soup, &next_far);
     const std::size_t inverted_after = quad_mesh_quality(copy).non_positive_scaled_jacobian;
     const bool closer = after < best_distance && inverted_after <= inverted_before;
     if(verbose)
@@ -365,6 +374,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     best_distance = after;
     held.insert(tips.begin(), tips.end());
     best = std::move(attempt);
+    start_soup = std::move(copy_soup);
     far = std::move(next_far);
     std::sort(far.begin(), far.end(), farther);
   }
@@ -379,7 +389,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     std::unique_ptr<Round_mesh> attempt = start_attempt();
     QuadMesh& copy = attempt->mesh;
     smooth(copy, *attempt->feature, *attempt->fixed);
-    const double after = measure(copy, nullptr);
+    const double after = measure(soup_of(copy), nullptr);
     const std::size_t inverted_after = quad_mesh_quality(copy).non_positive_scaled_jacobian;
     st.smoothed_all = after <= (std::max)(tolerance, 1.01 * best_distance) && inverted_after <= inverted_before;
     if(verbose)
