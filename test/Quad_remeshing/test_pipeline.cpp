@@ -537,6 +537,45 @@ BOOST_AUTO_TEST_CASE(tips_measure_quad_vertices)
   BOOST_TEST(st.distance_after < 0.1);
 }
 
+// Where the quads stray from the input but no input vertex is far from them (the smoothing projects the
+// quads onto the remeshed triangles, which can be off the input where it bends tightly: elephant's toes),
+// the quad vertices farther than half the tolerance go onto the input. A grid of unit quads over a plane,
+// one inner vertex raised by 0.3: the plane's vertex below it is 0.287 from the tent of quads, under the
+// tolerance of 0.29, so there is no tip; the raised vertex is pulled back down.
+BOOST_AUTO_TEST_CASE(quad_vertices_far_from_the_input_are_pulled_onto_it)
+{
+  typedef qr_test::Point_3 P;
+  const Mesh input = plane_with_spikes(8, [](int, int) { return 0.; });
+  const Mesh quads = quad_grid(8, [](int i, int j) { return P(i, j, i == 4 && j == 4 ? 0.3 : 0.); });
+  const auto qfeature = border_edge_map(quads);
+  std::size_t smoothings = 0;
+  auto smooth = [&](Mesh&, const auto&, const auto&) { ++smoothings; };
+  Mesh result;
+  auto keep = [&](Mesh& m, const auto&) { result = m; };
+  const QR::internal::Tip_snapping_statistics st =
+    QR::internal::snap_quads_to_input_tips(input, quads, qfeature, 0.29, smooth, keep, false);
+  BOOST_TEST(st.candidates == 0u);
+  BOOST_TEST(smoothings == 0u);
+  BOOST_TEST(st.distance_before == 0.3, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(st.pulled == 1u);
+  BOOST_TEST(st.pulled_kept);
+  BOOST_TEST(st.kept);
+  BOOST_TEST(st.distance_after < 1e-9);
+  double highest = -1.;
+  for(auto v : result.vertices()) highest = (std::max)(highest, result.point(v).z());
+  BOOST_TEST(result.number_of_vertices() == quads.number_of_vertices());
+  BOOST_TEST(highest < 1e-9);
+
+  // with a tolerance over the raised vertex's distance, nothing moves
+  Mesh untouched;
+  auto keep_untouched = [&](Mesh& m, const auto&) { untouched = m; };
+  const QR::internal::Tip_snapping_statistics within =
+    QR::internal::snap_quads_to_input_tips(input, quads, qfeature, 0.31, smooth, keep_untouched, false);
+  BOOST_TEST(within.pulled == 0u);
+  BOOST_TEST(!within.kept);
+  BOOST_TEST(untouched.number_of_vertices() == 0u);
+}
+
 // A spike in the middle of a plane that a 16 x 16 grid of unit quads cuts off, the grid's inner vertices
 // jittered (so that smoothing them would move them). A round of tips smooths only the quads within
 // tip_smoothing_rings rings of its tips, every other vertex held (all the quads were smoothed again before,

@@ -15,6 +15,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Bbox_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -23,6 +24,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iostream>
@@ -71,6 +73,8 @@ struct Tip_snapping_statistics
   std::size_t dropped = 0;    // tips left out because the quads around them strayed from the input
   std::size_t rounds = 0;     // rounds kept
   bool smoothed_all = false;  // whether the last smoothing of all the quads (tips held) was kept
+  std::size_t pulled = 0;     // quad vertices still far from the input moved onto it at the end
+  bool pulled_kept = false;   // whether they were kept
   bool kept = false;          // whether the snapped, smoothed quads replaced the old ones
   double distance_before = 0., distance_after = 0.; // the largest measured distance (absolute)
   double seconds = 0.;
@@ -83,6 +87,8 @@ struct Tip_snapping_statistics
     r["dropped"] = dropped;
     r["rounds"] = rounds;
     r["smoothed_all"] = smoothed_all;
+    r["pulled"] = pulled;
+    r["pulled_kept"] = pulled_kept;
     r["kept"] = kept;
     r["distance_before"] = diagonal > 0. ? distance_before / diagonal : 0.;
     r["distance_after"] = diagonal > 0. ? distance_after / diagonal : 0.;
@@ -115,7 +121,10 @@ struct Tip_snapping_statistics
   Then the next round (at most `max_tip_rounds`) does the same on the kept
   copy, with the tips of the rounds before still held: an ear is a blade rather than a point, and the
   points of its rim near the tip taken first, left out then, get vertices of their own (camelhead, qmeval:
-  0.71% -> 0.43% in 3 rounds). The last copy kept replaces `qmesh` (through `keep(copy, copy_feature)`).
+  0.71% -> 0.43% in 3 rounds). If the quads are still farther than `tolerance` from the input, the free
+  quad vertices (not held) farther than half of it are pulled onto the input, as far as the quads around
+  them allow (see below), kept if closer. The last copy kept replaces `qmesh` (through
+  `keep(copy, copy_feature)`).
 */
 template <typename TriangleMesh, typename QuadMesh, typename QuadFeatureMap, typename Smooth, typename Keep>
 Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, const QuadMesh& qmesh,
@@ -159,22 +168,27 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     s.triangles = quality::triangulate_soup<K>(s.points, s.polygons);
     return s;
   };
+  // (and where it is attained, into `worst_at`: an input vertex or a sample of the quads)
+  Point worst_at = CGAL::ORIGIN;
   auto measure = [&](const Soup& m, std::vector<std::pair<double, Point>>* far) {
     const std::vector<Triangle>& triangles = m.triangles;
     double worst = 0.;
     if(triangles.empty()) return worst;
     Quad_tree quads(triangles.begin(), triangles.end());
     quads.accelerate_distance_queries();
+    Point at = CGAL::ORIGIN;
     for(auto v : vertices(input))
     {
       if(halfedge(v, input) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue; // isolated: no surface
       const double d = std::sqrt(CGAL::to_double(quads.squared_distance(get(ivpm, v))));
-      worst = (std::max)(worst, d);
+      if(d > worst) { worst = d; at = get(ivpm, v); }
       if(far != nullptr && d > tolerance) far->emplace_back(d, get(ivpm, v));
     }
     quality::for_each_soup_sample(m.points, m.polygons, triangles, [&](const Point& s) {
-      worst = (std::max)(worst, std::sqrt(CGAL::to_double(surface.squared_distance(s))));
+      const double d = std::sqrt(CGAL::to_double(surface.squared_distance(s)));
+      if(d > worst) { worst = d; at = s; }
     });
+    worst_at = at;
     return worst;
   };
   // for each of `tips`, the largest distance to the input of the samples of `m` (as in `measure`) farther
@@ -197,8 +211,8 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
   std::vector<std::pair<double, Point>> far;
   Soup start_soup = soup_of(qmesh); // of the quads a round starts from (`qmesh`, then the last round kept)
   st.distance_before = st.distance_after = measure(start_soup, &far);
+  Point best_at = worst_at; // where the distance of the quads kept is attained
   st.candidates = far.size();
-  if(far.empty()) { st.seconds = timer.time(); return st; }
   // farthest first; ties by position, so that the order does not depend on the sort
   auto farther = [](const std::pair<double, Point>& a, const std::pair<double, Point>& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;
@@ -372,6 +386,7 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     sparse = false;
     ++st.rounds;
     best_distance = after;
+    best_at = worst_at;
     held.insert(tips.begin(), tips.end());
     best = std::move(attempt);
     start_soup = std::move(copy_soup);
@@ -399,7 +414,110 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     if(st.smoothed_all)
     {
       best_distance = after;
+      best_at = worst_at;
       best = std::move(attempt);
+    }
+  }
+  // Last, where the quads still stray farther than the tolerance from the input: the smoothing projects
+  // them onto the remeshed triangles, which can themselves be that far from the input where it bends
+  // tightly (elephant's toes: 0.52% of the diagonal). The free quad vertices farther than half the
+  // tolerance from the input move onto their nearest point of it, farthest first, or a part of the way
+  // (3/4, 1/2, 1/4) if the whole would turn a quad around over (its normal against the one before) or
+  // leave one with a scaled Jacobian under half of what it had and under 0.2; kept if closer, with no
+  // more inverted quads (measured only if the largest distance is attained near a vertex moved).
+  if(best_distance > tolerance)
+  {
+    std::unique_ptr<Round_mesh> attempt = start_attempt();
+    QuadMesh& copy = attempt->mesh;
+    auto cvpm = get(CGAL::vertex_point, copy);
+    typedef typename QTr::face_descriptor qface;
+    auto corners = [&](qface f, std::array<Point, 4>& q) {
+      std::size_t k = 0;
+      for(qvertex w : vertices_around_face(halfedge(f, copy), copy)) {
+        if(k == 4) return false;
+        q[k++] = get(cvpm, w);
+      }
+      return k == 4;
+    };
+    auto quad_normal = [](const std::array<Point, 4>& q) { return CGAL::cross_product(q[2] - q[0], q[3] - q[1]); };
+    // the candidates, farthest first (a pulled vertex changes the quads of its neighbours)
+    std::vector<std::pair<double, qvertex>> pulls;
+    for(qvertex v : vertices(copy))
+    {
+      if(is_border(v, copy) || get(*attempt->fixed, v)) continue;
+      bool free = true;
+      for(qhalfedge h : halfedges_around_target(v, copy)) free = free && !get(*attempt->feature, edge(h, copy));
+      if(!free) continue;
+      const double d = std::sqrt(CGAL::to_double(surface.squared_distance(get(cvpm, v))));
+      if(d > 0.5 * tolerance) pulls.emplace_back(d, v);
+    }
+    std::sort(pulls.begin(), pulls.end(), [](const auto& x, const auto& y) {
+      return x.first != y.first ? x.first > y.first : x.second < y.second; });
+    std::vector<CGAL::Bbox_3> changed; // around the vertices pulled
+    for(const auto& pv : pulls)
+    {
+      const qvertex v = pv.second;
+      const Point p = get(cvpm, v);
+      const Point target = surface.closest_point(p);
+      std::vector<std::pair<Vector, double>> before; // of the quads around v: normal, scaled Jacobian
+      std::array<Point, 4> q;
+      bool quads = true;
+      for(qhalfedge h : halfedges_around_target(v, copy)) {
+        if(is_border(h, copy)) continue;
+        if(!corners(face(h, copy), q)) { quads = false; break; }
+        before.emplace_back(quad_normal(q), quality::quad_scaled_jacobian(q));
+      }
+      if(!quads) continue;
+      // all the way if the quads around allow it, else a part of it
+      bool fine = false;
+      for(double t : {1., 0.75, 0.5, 0.25})
+      {
+        put(cvpm, v, p + t * (target - p));
+        std::size_t i = 0;
+        fine = true;
+        for(qhalfedge h : halfedges_around_target(v, copy)) {
+          if(is_border(h, copy)) continue;
+          corners(face(h, copy), q);
+          fine = fine && CGAL::to_double(quad_normal(q) * before[i].first) > 0. &&
+                 quality::quad_scaled_jacobian(q) >= (std::min)(0.5 * before[i].second, 0.2);
+          ++i;
+        }
+        if(fine) break;
+      }
+      if(!fine) { put(cvpm, v, p); continue; }
+      ++st.pulled;
+      // where the distances can change: the quads around v, before and after, and as far again as the
+      // largest distance (an input vertex that far may come closer to them)
+      CGAL::Bbox_3 box = p.bbox();
+      for(qhalfedge h : halfedges_around_target(v, copy))
+        if(!is_border(h, copy))
+          for(qvertex w : vertices_around_face(h, copy)) box += get(cvpm, w).bbox();
+      changed.push_back(box);
+    }
+    // only if the largest distance is attained where something changed can it fall
+    const bool may_fall = std::any_of(changed.begin(), changed.end(), [&](const CGAL::Bbox_3& b) {
+      const double x = CGAL::to_double(best_at.x()), y = CGAL::to_double(best_at.y()), z = CGAL::to_double(best_at.z());
+      return x >= b.xmin() - best_distance && x <= b.xmax() + best_distance && y >= b.ymin() - best_distance &&
+             y <= b.ymax() + best_distance && z >= b.zmin() - best_distance && z <= b.zmax() + best_distance;
+    });
+    if(st.pulled > 0 && !may_fall && verbose)
+      std::cerr << "[tips] " << st.pulled << " quad vertices farther than " << 0.5 * tolerance
+                << " from the input could be pulled onto it, none near the largest distance: left" << std::endl;
+    if(st.pulled > 0 && may_fall)
+    {
+      const double after = measure(soup_of(copy), nullptr);
+      const std::size_t inverted_after = quad_mesh_quality(copy).non_positive_scaled_jacobian;
+      st.pulled_kept = after < best_distance && inverted_after <= inverted_before;
+      if(verbose)
+        std::cerr << "[tips] " << st.pulled << " quad vertices farther than " << 0.5 * tolerance
+                  << " from the input pulled onto it: distance " << best_distance << " -> " << after << ", "
+                  << inverted_after << " quads inverted (" << inverted_before << " before)"
+                  << (st.pulled_kept ? ", kept" : ", not kept") << std::endl;
+      if(st.pulled_kept)
+      {
+        best_distance = after;
+        best = std::move(attempt);
+      }
     }
   }
   if(best)
