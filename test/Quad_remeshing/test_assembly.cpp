@@ -269,12 +269,10 @@ BOOST_AUTO_TEST_CASE(patch_with_a_slit_is_cut_open)
   const std::vector<Grid_pattern> patterns(1, Grid_pattern(12, 4));
 
   // cut open along the slit, the slit's base and middle vertices have two copies, its tip one
-  QR::internal::Cut_open_patch<Mesh>::Edge_set cut_edges;
-  for(const auto& side : patch.sides)
-    for(const SA& sa : side)
-      for(std::size_t k = 0; k + 1 < layout.arcs[sa.arc].vertices.size(); ++k)
-        cut_edges.insert(t.edge(t.halfedge(layout.arcs[sa.arc].vertices[k], layout.arcs[sa.arc].vertices[k + 1])));
-  const QR::internal::Cut_open_patch<Mesh> cut(t, patch.faces, cut_edges);
+  typedef QR::internal::Cut_open_patch<Mesh> Cut;
+  const Cut::Edge_set cut_edges = Cut::edges_along(t, patch.sides, layout.arcs);
+  BOOST_TEST(cut_edges.size() == 26u); // the rectangle's 24 boundary edges and the slit's 2
+  const Cut cut(t, patch.faces, cut_edges);
   BOOST_TEST(cut.vertex_of.size() == num_vertices(t) + 2u);
   std::size_t left_u, left_w, right_u, right_w;
   BOOST_TEST_REQUIRE(cut.left_of(id(4, 0), id(4, 1), left_u, left_w));

@@ -275,18 +275,8 @@ Quad_assembly_statistics assemble_quad_mesh(const TriangleMesh& tmesh,
     }
 
     // the patch's triangles as a local indexed mesh, cut open along the patch's sides
-    typename internal::Cut_open_patch<TriangleMesh>::Edge_set cut_edges;
-    for(const auto& side : patch.sides)
-      for(const Side_arc& sa : side)
-      {
-        const auto& chain = layout.arcs[sa.arc].vertices;
-        for(std::size_t q = 0; q + 1 < chain.size(); ++q)
-        {
-          const auto h = halfedge(chain[q], chain[q + 1], tmesh);
-          if(h.second) cut_edges.insert(edge(h.first, tmesh));
-        }
-      }
-    const internal::Cut_open_patch<TriangleMesh> cut(tmesh, patch.faces, cut_edges);
+    typedef internal::Cut_open_patch<TriangleMesh> Cut;
+    const Cut cut(tmesh, patch.faces, Cut::edges_along(tmesh, patch.sides, layout.arcs));
     internal::Patch_map map;
     map.triangles = cut.triangles;
     for(t_vertex v : cut.vertex_of) map.points.push_back(point_of(v));

@@ -44,6 +44,26 @@ public:
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef std::unordered_set<edge_descriptor, boost::hash<edge_descriptor>> Edge_set;
 
+  /// The edges of `tm` along a patch's sides: `sides` is a range of sides, each a range of side arcs
+  /// whose `arc` indexes `arcs`, an arc's `vertices` being its chain of mesh vertices (the layout
+  /// description of `assemble_quad_mesh()`); the cut edges of the patch.
+  template <typename Sides, typename Arcs>
+  static Edge_set edges_along(const TriangleMesh& tm, const Sides& sides, const Arcs& arcs)
+  {
+    Edge_set edges;
+    for(const auto& side : sides)
+      for(const auto& side_arc : side)
+      {
+        const auto& chain = arcs[side_arc.arc].vertices;
+        for(std::size_t q = 0; q + 1 < chain.size(); ++q)
+        {
+          const auto h = halfedge(chain[q], chain[q + 1], tm);
+          if(h.second) edges.insert(edge(h.first, tm));
+        }
+      }
+    return edges;
+  }
+
   /// `cut_edges`: the patch's boundary edges
   Cut_open_patch(const TriangleMesh& tm, const std::vector<face_descriptor>& faces, const Edge_set& cut_edges)
     : tm_(tm)
