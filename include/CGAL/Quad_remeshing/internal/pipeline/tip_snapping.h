@@ -441,24 +441,26 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
     };
     auto quad_normal = [](const std::array<Point, 4>& q) { return CGAL::cross_product(q[2] - q[0], q[3] - q[1]); };
     // the candidates, farthest first (a pulled vertex changes the quads of its neighbours)
-    std::vector<std::pair<double, qvertex>> pulls;
+    struct Pull { double distance; qvertex v; Point target; }; // the target: the closest input point
+    std::vector<Pull> pulls;
     for(qvertex v : vertices(copy))
     {
       if(is_border(v, copy) || get(*attempt->fixed, v)) continue;
       bool free = true;
       for(qhalfedge h : halfedges_around_target(v, copy)) free = free && !get(*attempt->feature, edge(h, copy));
       if(!free) continue;
-      const double d = std::sqrt(CGAL::to_double(surface.squared_distance(get(cvpm, v))));
-      if(d > 0.5 * tolerance) pulls.emplace_back(d, v);
+      const Point target = surface.closest_point(get(cvpm, v));
+      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(cvpm, v), target)));
+      if(d > 0.5 * tolerance) pulls.push_back(Pull{d, v, target});
     }
-    std::sort(pulls.begin(), pulls.end(), [](const auto& x, const auto& y) {
-      return x.first != y.first ? x.first > y.first : x.second < y.second; });
-    std::vector<CGAL::Bbox_3> changed; // around the vertices pulled
-    for(const auto& pv : pulls)
+    std::sort(pulls.begin(), pulls.end(), [](const Pull& x, const Pull& y) {
+      return x.distance != y.distance ? x.distance > y.distance : x.v < y.v; });
+    std::vector<CGAL::Bbox_3> changed; // around the vertices pulled, grown by the largest distance
+    for(const Pull& pull : pulls)
     {
-      const qvertex v = pv.second;
-      const Point p = get(cvpm, v);
-      const Point target = surface.closest_point(p);
+      const qvertex v = pull.v;
+      const Point p = get(cvpm, v); // (only v moves in its turn: its closest input point is still `target`)
+      const Point& target = pull.target;
       std::vector<std::pair<Vector, double>> before; // of the quads around v: normal, scaled Jacobian
       std::array<Point, 4> q;
       bool quads = true;
@@ -492,14 +494,13 @@ Tip_snapping_statistics snap_quads_to_input_tips(const TriangleMesh& input, cons
       for(qhalfedge h : halfedges_around_target(v, copy))
         if(!is_border(h, copy))
           for(qvertex w : vertices_around_face(h, copy)) box += get(cvpm, w).bbox();
-      changed.push_back(box);
+      const double r = best_distance;
+      changed.emplace_back(box.xmin() - r, box.ymin() - r, box.zmin() - r, box.xmax() + r, box.ymax() + r, box.zmax() + r);
     }
     // only if the largest distance is attained where something changed can it fall
+    const CGAL::Bbox_3 worst = best_at.bbox();
     const bool may_fall = std::any_of(changed.begin(), changed.end(), [&](const CGAL::Bbox_3& b) {
-      const double x = CGAL::to_double(best_at.x()), y = CGAL::to_double(best_at.y()), z = CGAL::to_double(best_at.z());
-      return x >= b.xmin() - best_distance && x <= b.xmax() + best_distance && y >= b.ymin() - best_distance &&
-             y <= b.ymax() + best_distance && z >= b.zmin() - best_distance && z <= b.zmax() + best_distance;
-    });
+      return CGAL::do_overlap(b, worst); });
     if(st.pulled > 0 && !may_fall && verbose)
       std::cerr << "[tips] " << st.pulled << " quad vertices farther than " << 0.5 * tolerance
                 << " from the input could be pulled onto it, none near the largest distance: left" << std::endl;
