@@ -14,6 +14,7 @@
 
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Real_timer.h>
 
@@ -936,6 +937,54 @@ BOOST_AUTO_TEST_CASE(refinement_reaches_across_a_wider_wedge)
   for(std::size_t p = 0; p < t.layout->number_of_patches(); ++p) BOOST_TEST(t.layout->validity(p) == Layout::SATISFIED);
   for(E e : t.m.edges())
     if(t.feature[e]) BOOST_TEST(t.layout->is_cut(e));
+}
+
+// Elephant's layout keeps non-convex patches whose left turn or hairpin has no landing point: a sharp tip
+// of a held crease, where a path leaves the line. A straight cut extending a side at the turn, its
+// crossings of the triangles made vertices, is inserted and lowers the number of invalid patches; the
+// split faces lie in the triangles they come from, so that part of the refinement leaves the surface as
+// it was.
+BOOST_AUTO_TEST_CASE(refinement_cuts_straight_where_no_landing_point)
+{
+  namespace QR = CGAL::Quad_remeshing;
+  Traced_for_refinement t("elephant.off");
+  Mesh& m = t.m;
+  const std::size_t invalid = t.st.layout.patches - t.st.layout.valid_patches;
+  BOOST_TEST_REQUIRE(invalid >= 1u);
+  const std::size_t vertices_before = m.number_of_vertices(), faces_before = m.number_of_faces();
+  const QR::Refine_patch_layout_statistics rs = QR::refine_patch_layout(m, t.feature, t.field, t.singularity, t.layout, t.st);
+  BOOST_TEST_MESSAGE("  elephant: " << rs.split_edges << " edges split, " << rs.straight_cuts << " straight cuts ("
+                     << rs.straight_cuts_kept << " inserted), invalid patches " << rs.invalid_before << " -> " << rs.invalid_after);
+  BOOST_TEST(rs.invalid_before == invalid);
+  BOOST_TEST_REQUIRE(rs.straight_cuts_kept >= 1u);
+  BOOST_TEST(rs.straight_cuts_kept <= rs.straight_cuts);
+  BOOST_TEST(rs.invalid_after < rs.invalid_before);
+  BOOST_TEST(rs.invalid_after == t.st.layout.patches - t.st.layout.valid_patches);
+  // a closed triangle mesh still, each split vertex with two more faces
+  BOOST_TEST(m.is_valid(false));
+  BOOST_TEST(CGAL::is_triangle_mesh(m));
+  BOOST_TEST(CGAL::is_closed(m));
+  BOOST_TEST(m.number_of_vertices() == vertices_before + rs.split_edges);
+  BOOST_TEST(m.number_of_faces() == faces_before + 2u * rs.split_edges);
+  for(F f : m.faces()) BOOST_TEST(CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, m)) > 0.);
+  for(E e : m.edges())
+    if(t.feature[e]) BOOST_TEST(t.layout->is_cut(e));
+  // a straight cut is in the layout: a path that is not a feature, at least two edges long, whose inner
+  // vertices are all new, and the cut is straight there (each inner vertex between its neighbours)
+  std::size_t straight = 0;
+  for(std::size_t id : t.layout->path_ids()) {
+    const Layout::Path& q = t.layout->path(id);
+    if(q.is_feature || q.vertices.size() < 3) continue;
+    bool cut = true;
+    for(std::size_t k = 1; k + 1 < q.vertices.size() && cut; ++k) {
+      cut = std::size_t(q.vertices[k]) >= vertices_before;
+      const Vector_3 a = m.point(q.vertices[k]) - m.point(q.vertices[k - 1]);
+      const Vector_3 b = m.point(q.vertices[k + 1]) - m.point(q.vertices[k]);
+      cut = cut && a * b > 0.;
+    }
+    straight += cut;
+  }
+  BOOST_TEST(straight >= 1u);
 }
 
 BOOST_AUTO_TEST_CASE(quad_sizing_follows_curvature)

@@ -368,14 +368,14 @@ Report quad_remesh_on_surface_meshes(const TriangleMesh& tmesh, QuadMesh& qmesh,
     \cgalParamNEnd
     \cgalParamNBegin{layout_refinement}
       \cgalParamDescription{whether `refine_patch_layout()` runs after `trace_patch_layout()`: the triangle mesh
-                            gets a vertex where a cut across a thin wedge needs one, and the patches that stay
-                            non-convex for want of it are cut. On the 22 development meshes it leaves 24
+                            gets a vertex where a cut across a thin wedge needs one, or a straight cut
+                            extending a side at a concave turn its vertices, and the patches that stay
+                            non-convex for want of them are cut. On the 22 development meshes it leaves 12
                             invalid patches instead of 54 (bunny and fertility none), raises truck's mean
-                            scaled Jacobian from 0.78 to 0.81 and leaves no quad flipped over (truck has 6
+                            scaled Jacobian from 0.78 to 0.84 and leaves no quad flipped over (truck has 6
                             without it); the layouts it changes move the quantization, which lands elsewhere
-                            on elephant, whose output goes from 0.45% to 0.49% of the diagonal from the input
-                            (qmeval; its farthest point lies on a toe where the remeshed triangles are
-                            themselves over 0.5% from the input, and the quads there are pulled back onto it)}
+                            on elephant, whose output goes from 0.45% to 0.41% of the diagonal from the input
+                            (qmeval)}
       \cgalParamType{Boolean}
       \cgalParamDefault{`true`}
     \cgalParamNEnd

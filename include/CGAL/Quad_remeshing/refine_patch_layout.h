@@ -44,6 +44,8 @@ struct Refine_patch_layout_statistics
   std::size_t invalid_before = 0; ///< invalid patches of the layout given
   std::size_t split_edges = 0;    ///< edges of the triangle mesh split, in all passes
   std::size_t passes = 0;         ///< passes that split edges
+  std::size_t straight_cuts = 0;  ///< straight cuts made paths of mesh edges, in all passes
+  std::size_t straight_cuts_kept = 0; ///< of those, cuts inserted into the layout
   std::size_t invalid_after = 0;  ///< invalid patches after `repair_patch_layout()` (`invalid_before` if no edge was split)
   double seconds = 0.;            ///< time of the refinement and the repair
 
@@ -54,6 +56,8 @@ struct Refine_patch_layout_statistics
     r["invalid_before"] = invalid_before;
     r["split_edges"] = split_edges;
     r["passes"] = passes;
+    r["straight_cuts"] = straight_cuts;
+    r["straight_cuts_kept"] = straight_cuts_kept;
     r["invalid_after"] = invalid_after;
     r["seconds"] = seconds;
     return r;
@@ -74,6 +78,64 @@ constexpr double landing_reach = 4.;
 // and splits the angle of the patch at the vertex into two angles of 30 to 178 degrees (120 to 240 if it is
 // over 300; measured through the patch's fan of faces, the direction projected into each face's plane). Of
 // those, the nearest; `found` is false if there is none.
+// the angle between two vectors, 0 if one is null
+template <typename Vector_3>
+double fan_angle(const Vector_3& a, const Vector_3& b)
+{
+  const double la = std::sqrt(CGAL::to_double(a * a)), lb = std::sqrt(CGAL::to_double(b * b));
+  if(la == 0. || lb == 0.) return 0.;
+  return std::acos((std::max)(-1., (std::min)(1., CGAL::to_double(a * b) / (la * lb))));
+}
+
+// A face of a patch at one of its boundary vertices v: its halfedge `g` leaving v, its two edges at v
+// (`a` along g, `b` along the edge coming back to v), and the angle of the patch at v before it.
+template <typename Layout>
+struct Fan_sector
+{
+  typedef typename Layout::Vector_3 Vector_3;
+  typename Layout::halfedge_descriptor g;
+  Vector_3 a, b;
+  double start, angle;
+
+  // whether the direction `d`, projected into the face's plane (`dp`; the surface may bend between v and
+  // where d points), lies between a and b, and d is less than 60 degrees off that plane
+  bool contains(const Vector_3& d, Vector_3& dp) const
+  {
+    const Vector_3 n = CGAL::cross_product(a, b);
+    const double nn = CGAL::to_double(n * n);
+    if(nn == 0.) return false;
+    dp = d - (CGAL::to_double(d * n) / nn) * n;
+    if(fan_angle(d, dp) > 60. * (CGAL_PI / 180.)) return false;
+    return fan_angle(dp, a) + fan_angle(dp, b) <= angle + 1. * (CGAL_PI / 180.);
+  }
+};
+
+// The faces of the patch at v = target(hin), from the boundary halfedge `hout` leaving v around to the
+// boundary halfedge `hin` coming in, and in `total` the patch's angle at v; empty if v is on the patch
+// boundary more than once.
+template <typename TriangleMesh, typename Layout>
+std::vector<Fan_sector<Layout>> patch_fan(const TriangleMesh& tm, const Layout& layout,
+                                          typename Layout::halfedge_descriptor hin,
+                                          typename Layout::halfedge_descriptor hout, double& total)
+{
+  typedef typename Layout::halfedge_descriptor halfedge_descriptor;
+  const auto& pv = layout.point(target(hin, tm));
+  std::vector<Fan_sector<Layout>> fan;
+  total = 0.;
+  halfedge_descriptor g = hout;
+  for(std::size_t guard = 0; guard < 64; ++guard) {
+    const halfedge_descriptor p = prev(g, tm); // x -> v
+    const auto a = layout.point(target(g, tm)) - pv, b = layout.point(source(p, tm)) - pv;
+    fan.push_back(Fan_sector<Layout>{g, a, b, total, fan_angle(a, b)});
+    total += fan.back().angle;
+    if(p == hin) return fan;
+    if(layout.is_cut(edge(p, tm))) break; // the vertex is on the loop more than once
+    g = opposite(p, tm);
+  }
+  fan.clear();
+  return fan;
+}
+
 template <typename Layout>
 struct Cut_landing
 {
@@ -98,26 +160,9 @@ Cut_landing<Layout> cut_landing(const TriangleMesh& tm, const Layout& layout,
   const vertex_descriptor v = target(hin, tm);
   const auto& pv = layout.point(v);
   auto length = [](const Vector_3& a) { return std::sqrt(CGAL::to_double(a * a)); };
-  auto angle = [&](const Vector_3& a, const Vector_3& b) {
-    const double la = length(a), lb = length(b);
-    if(la == 0. || lb == 0.) return 0.;
-    return std::acos((std::max)(-1., (std::min)(1., CGAL::to_double(a * b) / (la * lb))));
-  };
-  // the fan of the patch at v, from hout to hin: for each face, its two edges at v and the angle before it
-  struct Sector { Vector_3 a, b; double start, angle; };
-  std::vector<Sector> fan;
   double total = 0.;
-  halfedge_descriptor g = hout;
-  for(std::size_t guard = 0; guard < 64; ++guard) {
-    const halfedge_descriptor p = prev(g, tm); // x -> v
-    const Vector_3 a = layout.point(target(g, tm)) - pv, b = layout.point(source(p, tm)) - pv;
-    fan.push_back(Sector{a, b, total, angle(a, b)});
-    total += fan.back().angle;
-    if(p == hin) break;
-    if(layout.is_cut(edge(p, tm))) return best; // the vertex is on the loop more than once
-    g = opposite(p, tm);
-  }
-  if(prev(g, tm) != hin) return best;
+  const std::vector<Fan_sector<Layout>> fan = patch_fan(tm, layout, hin, hout, total);
+  if(fan.empty()) return best;
   const double deg = CGAL_PI / 180.;
   // the cut splits the patch's angle at v into two convex ones, not too sharp; an angle of more than 300
   // degrees (a left turn by the field's measure, but nearly the end of a line) into two about straight ones
@@ -139,14 +184,9 @@ Cut_landing<Layout> cut_landing(const TriangleMesh& tm, const Layout& layout,
     if(dist == 0. || dist > reach || (best.found && dist >= best.distance)) continue;
     // where d is in the fan: in the sector whose two edges it lies between
     double position = -1.;
-    for(const Sector& s : fan) {
-      // d projected into the sector's plane (the surface may bend between v and the foot)
-      const Vector_3 n = CGAL::cross_product(s.a, s.b);
-      const double nn = CGAL::to_double(n * n);
-      if(nn == 0.) continue;
-      const Vector_3 dp = d - (CGAL::to_double(d * n) / nn) * n;
-      if(angle(d, dp) > 60. * deg) continue;
-      if(angle(dp, s.a) + angle(dp, s.b) <= s.angle + 1. * deg) { position = s.start + angle(dp, s.a); break; }
+    for(const Fan_sector<Layout>& s : fan) {
+      Vector_3 dp;
+      if(s.contains(d, dp)) { position = s.start + fan_angle(dp, s.a); break; }
     }
     if(position < 0. || position < low || position > high || total - position < low || total - position > high)
       continue;
@@ -156,6 +196,179 @@ Cut_landing<Layout> cut_landing(const TriangleMesh& tm, const Layout& layout,
     best.distance = dist;
   }
   return best;
+}
+
+// A straight cut from a boundary vertex v of a patch into it, to the first boundary edge it meets: where
+// the plane through v that holds the cut's direction and the normal of the face it starts in crosses the
+// edges of the patch, face after face.
+template <typename Layout>
+struct Slice_cut
+{
+  typedef typename Layout::halfedge_descriptor halfedge_descriptor;
+  typedef typename Layout::Point_3 Point_3;
+  bool found = false;
+  std::vector<std::pair<halfedge_descriptor, Point_3>> crossings; // edges inside the patch, each seen from
+                                                                  // the face the cut leaves, and the point
+  halfedge_descriptor landing_halfedge; // the boundary edge met, seen from the patch
+  Point_3 point;                        // where
+  double length = 0.;
+  double landing_skew = 0.; // how far from a right angle the cut meets that edge (radians)
+  std::vector<typename Layout::vertex_descriptor> vertices; // the vertices of the faces it changes
+};
+
+// The cut from v = target(L[i]) in direction `d`, if it leaves v inside the patch (between the two
+// boundary edges at v), crosses every edge in its inner 80% (no sliver triangles when the edges are
+// split there), meets the boundary inside an edge (its inner 70%) at 45 to 135 degrees, and is at most
+// `reach` long.
+template <typename TriangleMesh, typename Layout>
+Slice_cut<Layout> slice_cut(const TriangleMesh& tm, const Layout& layout,
+                            const std::vector<typename Layout::halfedge_descriptor>& L, std::size_t i,
+                            const typename Layout::Vector_3& d, double reach)
+{
+  typedef typename Layout::halfedge_descriptor halfedge_descriptor;
+  typedef typename Layout::Vector_3 Vector_3;
+  Slice_cut<Layout> cut;
+  const halfedge_descriptor hin = L[i], hout = L[(i + 1) % L.size()];
+  const auto& pv = layout.point(target(hin, tm));
+  double total = 0.;
+  const std::vector<Fan_sector<Layout>> fan = patch_fan(tm, layout, hin, hout, total);
+  // the face the cut starts in, and the plane's normal
+  halfedge_descriptor e; // the halfedge crossed next, in the face the cut is in
+  Vector_3 normal;
+  bool started = false;
+  for(const Fan_sector<Layout>& s : fan) {
+    Vector_3 dp;
+    if(!s.contains(d, dp)) continue;
+    normal = CGAL::cross_product(dp, CGAL::cross_product(s.a, s.b));
+    e = next(s.g, tm);
+    started = CGAL::to_double(normal * normal) > 0.;
+    break;
+  }
+  if(!started) return cut;
+  auto side = [&](typename Layout::vertex_descriptor w) { return CGAL::to_double((layout.point(w) - pv) * normal); };
+  auto crossing = [&](halfedge_descriptor h, double& t) {
+    const double s0 = side(source(h, tm)), s1 = side(target(h, tm));
+    t = s0 / (s0 - s1);
+    return layout.point(source(h, tm)) + t * (layout.point(target(h, tm)) - layout.point(source(h, tm)));
+  };
+  auto last = pv;
+  std::vector<typename Layout::face_descriptor> faces{face(e, tm)}; // the faces it goes through
+  for(std::size_t guard = 0; guard < 64; ++guard) {
+    const double s0 = side(source(e, tm)), s1 = side(target(e, tm));
+    if(!((s0 < 0. && s1 > 0.) || (s0 > 0. && s1 < 0.))) return cut;
+    double t = 0.;
+    const auto q = crossing(e, t);
+    if(guard == 0 && CGAL::to_double((q - pv) * d) <= 0.) return cut; // behind v
+    cut.length += std::sqrt(CGAL::to_double(CGAL::squared_distance(last, q)));
+    if(cut.length > reach) return cut;
+    if(layout.is_cut(edge(e, tm))) {
+      if(t < 0.15 || t > 0.85) return cut;
+      // (a patch on both sides of the edge: the face beyond would be split twice)
+      const halfedge_descriptor o = opposite(e, tm);
+      if(!is_border(o, tm) && std::find(faces.begin(), faces.end(), face(o, tm)) != faces.end()) return cut;
+      const double skew = std::abs(CGAL_PI / 2. - fan_angle(q - last, layout.point(target(e, tm)) - layout.point(source(e, tm))));
+      if(skew > CGAL_PI / 4.) return cut;
+      cut.found = true;
+      cut.landing_halfedge = e;
+      cut.point = q;
+      cut.landing_skew = skew;
+      return cut;
+    }
+    if(t < 0.1 || t > 0.9) return cut;
+    cut.crossings.emplace_back(e, q);
+    last = q;
+    // into the face beyond, and out through the edge whose ends are on both sides of the plane
+    const halfedge_descriptor o = opposite(e, tm);
+    if(is_border(o, tm) || std::find(faces.begin(), faces.end(), face(o, tm)) != faces.end()) return cut;
+    faces.push_back(face(o, tm));
+    const double sc = side(target(next(o, tm), tm));
+    if(sc == 0.) return cut;
+    e = (sc > 0.) == (side(source(o, tm)) > 0.) ? next(o, tm) : prev(o, tm);
+  }
+  return cut;
+}
+
+// Splits the face of `h` (a triangle whose edges were split, so a polygon of 4 or 5 vertices) from
+// target(h) to `w`, another of its vertices, then what is not a triangle along its shorter diagonal; every
+// part keeps the face's field direction, and the new edges are no features.
+template <typename TriangleMesh, typename EdgeIsFeatureMap, typename FaceFieldMap>
+void split_face_towards(TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                        typename boost::graph_traits<TriangleMesh>::vertex_descriptor w,
+                        EdgeIsFeatureMap feature, FaceFieldMap field)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  const auto direction = get(field, face(h, tm));
+  auto vpm = get(CGAL::vertex_point, tm);
+  auto split = [&](halfedge_descriptor a, halfedge_descriptor b) { // from target(a) to target(b)
+    const halfedge_descriptor c = CGAL::Euler::split_face(a, b, tm);
+    put(feature, edge(c, tm), false);
+    put(field, face(c, tm), direction);
+    put(field, face(opposite(c, tm), tm), direction);
+  };
+  halfedge_descriptor to_w = h;
+  while(target(to_w, tm) != w) to_w = next(to_w, tm);
+  split(h, to_w);
+  // the two parts; a quadrilateral along its shorter diagonal
+  for(halfedge_descriptor g : {h, to_w}) {
+    if(degree(face(g, tm), tm) != 4) continue;
+    const halfedge_descriptor g1 = next(g, tm), g2 = next(g1, tm), g3 = next(g2, tm);
+    const double d02 = CGAL::to_double(CGAL::squared_distance(get(vpm, target(g, tm)), get(vpm, target(g2, tm))));
+    const double d13 = CGAL::to_double(CGAL::squared_distance(get(vpm, target(g1, tm)), get(vpm, target(g3, tm))));
+    if(d02 <= d13) split(g, g2);
+    else split(g1, g3);
+  }
+}
+
+// Makes the cut `cut` from v a path of mesh edges: splits the edges it crosses and the boundary edge it
+// meets at its points, then the faces it goes through along it (their other parts into triangles), and
+// the face beyond the boundary edge towards its third vertex. Returns the cut's vertices, v first; the
+// boundary edge's ends and new vertex go to `inserted`.
+template <typename TriangleMesh, typename Layout, typename EdgeIsFeatureMap, typename FaceFieldMap>
+std::vector<typename Layout::vertex_descriptor>
+embed_slice_cut(TriangleMesh& tm, const Slice_cut<Layout>& cut, typename Layout::vertex_descriptor v,
+                EdgeIsFeatureMap feature, FaceFieldMap field,
+                std::map<std::pair<typename Layout::vertex_descriptor, typename Layout::vertex_descriptor>,
+                         typename Layout::vertex_descriptor>& inserted)
+{
+  typedef typename Layout::halfedge_descriptor halfedge_descriptor;
+  typedef typename Layout::vertex_descriptor vertex_descriptor;
+  typedef typename Layout::face_descriptor face_descriptor;
+  auto vpm = get(CGAL::vertex_point, tm);
+  // the faces the cut goes through, in order (face descriptors survive the edge splits)
+  std::vector<face_descriptor> faces;
+  for(const auto& c : cut.crossings) faces.push_back(face(c.first, tm));
+  faces.push_back(face(cut.landing_halfedge, tm));
+  const halfedge_descriptor beyond = opposite(cut.landing_halfedge, tm);
+  const bool beyond_face = !is_border(beyond, tm);
+  const face_descriptor outer = beyond_face ? face(beyond, tm) : face_descriptor();
+  // the edge splits
+  std::vector<vertex_descriptor> path{v};
+  auto split_edge_at = [&](halfedge_descriptor h, const typename Layout::Point_3& q) {
+    const bool was_feature = get(feature, edge(h, tm));
+    const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tm); // source(h) -> m, then h: m -> target
+    put(vpm, target(hnew, tm), q);
+    put(feature, edge(hnew, tm), was_feature);
+    put(feature, edge(h, tm), was_feature);
+    return target(hnew, tm);
+  };
+  for(const auto& c : cut.crossings) path.push_back(split_edge_at(c.first, c.second));
+  const vertex_descriptor x = source(cut.landing_halfedge, tm), y = target(cut.landing_halfedge, tm);
+  const vertex_descriptor m = split_edge_at(cut.landing_halfedge, cut.point);
+  inserted[std::make_pair((std::min)(x, y), (std::max)(x, y))] = m;
+  path.push_back(m);
+  // each face split along the cut
+  for(std::size_t k = 0; k < faces.size(); ++k) {
+    halfedge_descriptor h = halfedge(faces[k], tm);
+    while(target(h, tm) != path[k]) h = next(h, tm);
+    split_face_towards(tm, h, path[k + 1], feature, field);
+  }
+  if(beyond_face) {
+    // the face beyond: from m to its vertex that is not on the split edge
+    halfedge_descriptor h = halfedge(outer, tm);
+    while(target(h, tm) != m) h = next(h, tm);
+    split_face_towards(tm, h, target(next(next(h, tm), tm), tm), feature, field);
+  }
+  return path;
 }
 
 // Whether moving `z` to `moved` keeps every face around it turned the same way (the normals before and
@@ -216,16 +429,29 @@ bool move_keeps_orientation(const TriangleMesh& tm, const Layout& layout, typena
   appended, as `CGAL::Surface_mesh` does when it has no removed elements). The moved vertices stay within
   the thin wedges, so the surface barely changes.
 
+  Where a left turn has no landing point (or its vertex `z` may not move), and at a U-turn of more than a
+  half turn (a hairpin), the refinement tries a straight cut instead: one of the two sides at `v`
+  extended into the patch (its direction is that from the vertex three boundary edges back along the side,
+  or fewer if the side ends before), made of the points where the plane through `v` that holds this
+  direction and the normal of the face it enters crosses the edges of the patch, face after face, until
+  it meets the boundary. It must cross every edge within its inner 80% (no sliver triangles), meet the
+  boundary within the inner 70% of an edge at 45 to 135 degrees, and be at most eight times as long as the
+  longer boundary edge at `v`; of the two sides, the cut meeting the boundary closer to a right angle is
+  taken. The edges it crosses and the one it meets are split at those points, the faces it goes through
+  along it (what is left of them along their shorter diagonal), and the face beyond the boundary edge
+  towards its third vertex, so the surface does not change at all. The cut is inserted into the new
+  layout if it lowers the number of invalid patches where it is (before the repair). A vertex takes part
+  in one landing or straight cut at most in a pass (for a straight cut, every vertex of the faces it
+  changes).
+
   Every patch that was valid stays valid, and the number of invalid patches does not grow (the repair's
   rule). On the 22 development meshes (`quad_remesh()`, which runs it by default), 54 invalid patches of 8677
-  become 24: truck 34 -> 13 (in two passes), elephant 7 -> 3, rocker_arm 7 -> 5, camelhead 3 -> 2, bunny
-  and fertility 1 -> 0; spot keeps its one (no landing point qualifies). Of the 24 left, 6 have a sharp
-  U-turn (21 to 43 degrees: two paths, or a path and a line, meeting at a sharp angle) and 3 a U-turn of
-  about 360 degrees in a hairpin of a line a few hundredths of the quad edge length across (the
-  refinement looks at left turns only: a landing point for those hairpins, the perpendicular splitting
-  their angle into two about straight ones, was tried and found none); the others are left turns without
-  a landing point, most of them concave corners between two feature lines whose far side is out of
-  reach even at eight times the boundary edge. A pass
+  become 12 of 8751: truck 34 -> 5 (in two passes), elephant 7 -> 2, rocker_arm 7 -> 2, camelhead 3 -> 2,
+  bunny and fertility 1 -> 0; spot keeps its one (no landing point or straight cut qualifies). The
+  straight cuts (truck 11 inserted, rocker_arm 3, elephant 1) took the count from 24 to 12. Of the 12 left,
+  9 turn back by U-turns only: sharp ones (two paths, or a path and a line, meeting at a sharp angle),
+  which no cut from that vertex can mend, or hairpins of a line too small for a straight cut; the other 3
+  are left turns whose cuts meet the boundary too far, too close to a vertex or too slanted. A pass
   takes a few hundredths of a second for the landings and the splits, and then as long as the rounds of
   `repair_patch_layout()`.
 
@@ -281,6 +507,7 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
     std::vector<std::pair<halfedge_descriptor, Point_3>> splits;
     std::vector<vertex_descriptor> touched; // one landing per vertex: the moves and splits do not interact
     std::vector<std::pair<vertex_descriptor, Point_3>> moves;
+    std::vector<std::pair<vertex_descriptor, internal::Slice_cut<Layout>>> slices; // straight cuts, by their start
     std::size_t invalid = 0;
     for(std::size_t p = 0; p < traced.number_of_patches(); ++p) {
       const auto condition = traced.validity(p);
@@ -289,36 +516,79 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
       if(condition != Layout::NOT_CONVEX) continue;
       const auto& P = traced.patch(p);
       const auto& L = P.loops[0];
-      for(std::size_t i = 0; i < L.size(); ++i) {
-        if(P.turns[0][i] != Layout::LEFT_TURN) continue;
+      auto is_touched = [&](vertex_descriptor w) { return std::find(touched.begin(), touched.end(), w) != touched.end(); };
+      // a landing point for the left turn i (see above); whether one was taken
+      auto land = [&](std::size_t i) {
         const auto landing = internal::cut_landing(tmesh, traced, L, i);
-        if(!landing.found) continue;
+        if(!landing.found) return false;
         // the cut goes from v to the landing point through the patch-side face of the edge: straight through
         // its third vertex z, moved onto the segment, if z is not v (z must then be a neighbour of v inside
         // the patch, and the move must not turn any of its faces over)
         const vertex_descriptor v = target(L[i], tmesh), z = target(next(landing.edge_halfedge, tmesh), tmesh);
         const vertex_descriptor x = source(landing.edge_halfedge, tmesh), y = target(landing.edge_halfedge, tmesh);
-        auto is_touched = [&](vertex_descriptor w) { return std::find(touched.begin(), touched.end(), w) != touched.end(); };
-        if(is_touched(v) || is_touched(z) || is_touched(x) || is_touched(y)) continue;
+        if(is_touched(v) || is_touched(z) || is_touched(x) || is_touched(y)) return false;
         if(z != v) {
-          if(!edge(v, z, tmesh).second) continue;
+          if(!edge(v, z, tmesh).second) return false;
           bool inside = true;
           for(halfedge_descriptor g : halfedges_around_target(z, tmesh)) inside = inside && !traced.is_cut(edge(g, tmesh));
-          if(!inside) continue;
+          if(!inside) return false;
           const auto pv = traced.point(v);
           const auto vf = landing.point - pv;
           const double t = (std::max)(0.2, (std::min)(0.8, CGAL::to_double((traced.point(z) - pv) * vf) / CGAL::to_double(vf * vf)));
           const Point_3 moved = pv + t * vf;
-          if(!internal::move_keeps_orientation(tmesh, traced, z, moved, landing.edge_halfedge, landing.point)) continue;
+          if(!internal::move_keeps_orientation(tmesh, traced, z, moved, landing.edge_halfedge, landing.point)) return false;
           moves.emplace_back(z, moved);
         }
         touched.insert(touched.end(), {v, x, y, z});
         splits.emplace_back(landing.edge_halfedge, landing.point);
+        return true;
+      };
+      // else a straight cut extending one of the two sides at the turn i (see above)
+      auto slice = [&](std::size_t i) {
+        const vertex_descriptor v = target(L[i], tmesh);
+        if(is_touched(v)) return;
+        const auto pv = traced.point(v);
+        // a side's direction: from its vertex up to 3 edges away from v (fewer if it turns before)
+        auto side_end = [&](bool backwards) {
+          std::size_t k = i;
+          for(std::size_t n = 0; n < 3; ++n) {
+            k = backwards ? (k + L.size() - 1) % L.size() : (k + 1) % L.size();
+            if(k == i || P.turns[0][k] != Layout::STRAIGHT) break; // a corner ends the side
+          }
+          return traced.point(target(L[k], tmesh));
+        };
+        const double reach = 2. * internal::landing_reach *
+          (std::max)(std::sqrt(CGAL::to_double(CGAL::squared_distance(pv, traced.point(source(L[i], tmesh))))),
+                     std::sqrt(CGAL::to_double(CGAL::squared_distance(pv, traced.point(target(L[(i + 1) % L.size()], tmesh))))));
+        internal::Slice_cut<Layout> best;
+        for(bool backwards : {true, false}) {
+          const auto d = pv - side_end(backwards);
+          if(CGAL::to_double(d * d) == 0.) continue;
+          internal::Slice_cut<Layout> cut = internal::slice_cut(tmesh, traced, L, i, d, reach);
+          if(!cut.found) continue;
+          // its vertices: v, the ends of the edges it splits, the third vertex beyond the boundary edge
+          std::vector<vertex_descriptor> around{v, source(cut.landing_halfedge, tmesh), target(cut.landing_halfedge, tmesh)};
+          if(!is_border(opposite(cut.landing_halfedge, tmesh), tmesh))
+            around.push_back(target(next(opposite(cut.landing_halfedge, tmesh), tmesh), tmesh));
+          for(const auto& c : cut.crossings) around.insert(around.end(), {source(c.first, tmesh), target(c.first, tmesh)});
+          if(std::any_of(around.begin() + 1, around.end(), is_touched)) continue;
+          if(!best.found || cut.landing_skew < best.landing_skew) { best = std::move(cut); best.vertices = std::move(around); }
+        }
+        if(!best.found) return;
+        touched.insert(touched.end(), best.vertices.begin(), best.vertices.end());
+        slices.emplace_back(v, std::move(best));
+      };
+      for(std::size_t i = 0; i < L.size(); ++i) {
+        const bool left = P.turns[0][i] == Layout::LEFT_TURN;
+        if(left && land(i)) continue;
+        if(left || (P.turns[0][i] == Layout::U_TURN)) slice(i);
       }
     }
     if(pass == 0) stats.invalid_before = stats.invalid_after = invalid;
-    if(splits.empty()) break;
+    if(splits.empty() && slices.empty()) break;
     stats.split_edges += splits.size();
+    for(const auto& sl : slices) stats.split_edges += sl.second.crossings.size() + 1;
+    stats.straight_cuts += slices.size();
     ++stats.passes;
 
     // the paths and corners of the layout, read before the mesh changes
@@ -353,6 +623,11 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
       }
     }
 
+    // the straight cuts made paths of mesh edges
+    std::vector<std::vector<vertex_descriptor>> straight_cuts;
+    for(const auto& sl : slices)
+      straight_cuts.push_back(internal::embed_slice_cut(tmesh, sl.second, sl.first, edge_is_feature_map, field, inserted));
+
     for(const auto& mv : moves) put(vpm, mv.first, mv.second);
     // the new layout, with the same paths
     auto refined = std::make_unique<Layout>(tmesh, field, singularities);
@@ -377,6 +652,23 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
     }
     for(halfedge_descriptor h : corners)
       if(!is_border(h, tmesh) && refined->is_cut(edge(h, tmesh))) refined->add_corner(h);
+    // and each straight cut, if it lowers the number of invalid patches where it is
+    for(std::vector<vertex_descriptor>& vs : straight_cuts) {
+      typename Layout::Path q;
+      for(std::size_t k = 0; k + 1 < vs.size(); ++k) {
+        const auto e = get(vpm, vs[k + 1]) - get(vpm, vs[k]);
+        const double l = std::sqrt(CGAL::to_double(e * e));
+        q.directions.push_back(l > 0. ? e / l : e);
+      }
+      q.vertices = std::move(vs);
+      typename Layout::Patch_change change = refined->preview_add_path(q);
+      std::size_t before = 0, after = 0;
+      for(std::size_t p : change.old_patches) before += refined->validity(p) != Layout::SATISFIED;
+      for(const auto& N : change.new_patches) after += refined->validity(N) != Layout::SATISFIED;
+      if(after >= before) continue;
+      refined->add_path(std::move(q), std::move(change));
+      ++stats.straight_cuts_kept;
+    }
     layout = std::move(refined);
 
     const Trace_patch_layout_statistics repair =
