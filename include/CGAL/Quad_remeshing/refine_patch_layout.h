@@ -288,6 +288,17 @@ Slice_cut<Layout> slice_cut(const TriangleMesh& tm, const Layout& layout,
   return cut;
 }
 
+// the halfedge of the face of `h` whose target is `w` (the cuts of a pass share no face, so it is there)
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+halfedge_to(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+            typename boost::graph_traits<TriangleMesh>::vertex_descriptor w)
+{
+  for(auto g : halfedges_around_face(h, tm))
+    if(target(g, tm) == w) return g;
+  throw std::logic_error("refine_patch_layout: a vertex of a straight cut is not on the face it should cut");
+}
+
 // Splits the face of `h` (a triangle whose edges were split, so a polygon of 4 or 5 vertices) from
 // target(h) to `w`, another of its vertices, then what is not a triangle along its shorter diagonal; every
 // part keeps the face's field direction, and the new edges are no features.
@@ -305,8 +316,7 @@ void split_face_towards(TriangleMesh& tm, typename boost::graph_traits<TriangleM
     put(field, face(c, tm), direction);
     put(field, face(opposite(c, tm), tm), direction);
   };
-  halfedge_descriptor to_w = h;
-  while(target(to_w, tm) != w) to_w = next(to_w, tm);
+  const halfedge_descriptor to_w = halfedge_to(tm, h, w);
   split(h, to_w);
   // the two parts; a quadrilateral along its shorter diagonal
   for(halfedge_descriptor g : {h, to_w}) {
@@ -357,15 +367,11 @@ embed_slice_cut(TriangleMesh& tm, const Slice_cut<Layout>& cut, typename Layout:
   inserted[std::make_pair((std::min)(x, y), (std::max)(x, y))] = m;
   path.push_back(m);
   // each face split along the cut
-  for(std::size_t k = 0; k < faces.size(); ++k) {
-    halfedge_descriptor h = halfedge(faces[k], tm);
-    while(target(h, tm) != path[k]) h = next(h, tm);
-    split_face_towards(tm, h, path[k + 1], feature, field);
-  }
+  for(std::size_t k = 0; k < faces.size(); ++k)
+    split_face_towards(tm, halfedge_to(tm, halfedge(faces[k], tm), path[k]), path[k + 1], feature, field);
   if(beyond_face) {
     // the face beyond: from m to its vertex that is not on the split edge
-    halfedge_descriptor h = halfedge(outer, tm);
-    while(target(h, tm) != m) h = next(h, tm);
+    const halfedge_descriptor h = halfedge_to(tm, halfedge(outer, tm), m);
     split_face_towards(tm, h, target(next(next(h, tm), tm), tm), feature, field);
   }
   return path;
