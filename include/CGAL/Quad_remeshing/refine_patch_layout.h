@@ -72,12 +72,6 @@ constexpr unsigned max_layout_refinement_passes = 4;
 // fertility's wedge of 15 faces without one; 8 finds no other)
 constexpr double landing_reach = 4.;
 
-// The point where a cut from the concave boundary vertex `target(L[i])` of a patch whose first loop is `L`
-// would meet another boundary edge of `L` at a right angle, if it lies inside that edge (away from its ends
-// by 15% of its length), near (within `landing_reach` times the longer of the vertex's two boundary edges)
-// and splits the angle of the patch at the vertex into two angles of 30 to 178 degrees (120 to 240 if it is
-// over 300; measured through the patch's fan of faces, the direction projected into each face's plane). Of
-// those, the nearest; `found` is false if there is none.
 // the angle between two vectors, 0 if one is null
 template <typename Vector_3>
 double fan_angle(const Vector_3& a, const Vector_3& b)
@@ -136,6 +130,12 @@ std::vector<Fan_sector<Layout>> patch_fan(const TriangleMesh& tm, const Layout& 
   return fan;
 }
 
+// The point where a cut from the concave boundary vertex `target(L[i])` of a patch whose first loop is `L`
+// would meet another boundary edge of `L` at a right angle, if it lies inside that edge (away from its ends
+// by 15% of its length), near (within `landing_reach` times the longer of the vertex's two boundary edges)
+// and splits the angle of the patch at the vertex into two angles of 30 to 178 degrees (120 to 240 if it is
+// over 300; measured through the patch's fan of faces, the direction projected into each face's plane). Of
+// those, the nearest; `found` is false if there is none.
 template <typename Layout>
 struct Cut_landing
 {
