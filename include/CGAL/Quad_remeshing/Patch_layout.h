@@ -1264,6 +1264,25 @@ private:
   double rebuild_seconds_ = 0.;
 };
 
+namespace internal {
+
+// The path through the vertices `vs` of `layout`'s mesh, each edge's direction its own unit vector: a path
+// made of straight segments (a cut) rather than traced along the field.
+template <typename Layout>
+typename Layout::Path straight_path(const Layout& layout, std::vector<typename Layout::vertex_descriptor> vs)
+{
+  typename Layout::Path q;
+  q.vertices = std::move(vs);
+  for(std::size_t i = 0; i + 1 < q.vertices.size(); ++i) {
+    const auto e = layout.point(q.vertices[i + 1]) - layout.point(q.vertices[i]);
+    const double l = std::sqrt(CGAL::to_double(e * e));
+    q.directions.push_back(l > 0. ? e / l : e);
+  }
+  return q;
+}
+
+} // namespace internal
+
 } // namespace Quad_remeshing
 } // namespace CGAL
 

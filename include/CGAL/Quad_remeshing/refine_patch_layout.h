@@ -72,6 +72,17 @@ constexpr unsigned max_layout_refinement_passes = 4;
 // fertility's wedge of 15 faces without one; 8 finds no other)
 constexpr double landing_reach = 4.;
 
+// the length of the longer of the two boundary edges `hin` and `hout` at their common vertex (the unit of
+// the reach of landings and straight cuts)
+template <typename TriangleMesh, typename Layout>
+double longer_boundary_edge(const TriangleMesh& tm, const Layout& layout,
+                            typename Layout::halfedge_descriptor hin, typename Layout::halfedge_descriptor hout)
+{
+  const auto& pv = layout.point(target(hin, tm));
+  const auto a = layout.point(target(hout, tm)) - pv, b = pv - layout.point(source(hin, tm));
+  return (std::max)(std::sqrt(CGAL::to_double(a * a)), std::sqrt(CGAL::to_double(b * b)));
+}
+
 // the angle between two vectors, 0 if one is null
 template <typename Vector_3>
 double fan_angle(const Vector_3& a, const Vector_3& b)
@@ -168,7 +179,7 @@ Cut_landing<Layout> cut_landing(const TriangleMesh& tm, const Layout& layout,
   // degrees (a left turn by the field's measure, but nearly the end of a line) into two about straight ones
   const bool nearly_line_end = total > 300. * deg;
   const double low = (nearly_line_end ? 120. : 30.) * deg, high = (nearly_line_end ? 240. : 178.) * deg;
-  const double reach = landing_reach * (std::max)(length(layout.point(target(hout, tm)) - pv), length(pv - layout.point(source(hin, tm))));
+  const double reach = landing_reach * longer_boundary_edge(tm, layout, hin, hout);
   for(std::size_t j = 0; j < m; ++j) {
     const halfedge_descriptor e = L[j];
     const vertex_descriptor x = source(e, tm), y = target(e, tm);
@@ -213,7 +224,7 @@ struct Slice_cut
   Point_3 point;                        // where
   double length = 0.;
   double landing_skew = 0.; // how far from a right angle the cut meets that edge (radians)
-  std::vector<typename Layout::vertex_descriptor> vertices; // the vertices of the faces it changes
+  std::vector<typename Layout::vertex_descriptor> vertices; // the vertices of the faces it changes, v first
 };
 
 // The cut from v = target(L[i]) in direction `d`, if it leaves v inside the patch (between the two
@@ -272,6 +283,12 @@ Slice_cut<Layout> slice_cut(const TriangleMesh& tm, const Layout& layout,
       cut.landing_halfedge = e;
       cut.point = q;
       cut.landing_skew = skew;
+      // the vertices of the faces it changes: v, the ends of the edges it splits, the third vertex beyond
+      // the boundary edge
+      cut.vertices = {target(hin, tm), source(e, tm), target(e, tm)};
+      if(!is_border(o, tm)) cut.vertices.push_back(target(next(o, tm), tm));
+      for(const auto& c : cut.crossings)
+        cut.vertices.insert(cut.vertices.end(), {source(c.first, tm), target(c.first, tm)});
       return cut;
     }
     if(t < 0.1 || t > 0.9) return cut;
@@ -297,6 +314,21 @@ halfedge_to(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::
   for(auto g : halfedges_around_face(h, tm))
     if(target(g, tm) == w) return g;
   throw std::logic_error("refine_patch_layout: a vertex of a straight cut is not on the face it should cut");
+}
+
+// Splits the edge of `h` at the point `q`; the two parts keep its feature flag. Returns the new vertex, the
+// target of prev(h) after the split (h then goes from it to its old target).
+template <typename TriangleMesh, typename Point_3, typename EdgeIsFeatureMap>
+typename boost::graph_traits<TriangleMesh>::vertex_descriptor
+split_edge_at(TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const Point_3& q,
+              EdgeIsFeatureMap feature)
+{
+  const bool was_feature = get(feature, edge(h, tm));
+  const auto hnew = CGAL::Euler::split_edge(h, tm); // source(h) -> m, then h: m -> target
+  put(get(CGAL::vertex_point, tm), target(hnew, tm), q);
+  put(feature, edge(hnew, tm), was_feature);
+  put(feature, edge(h, tm), was_feature);
+  return target(hnew, tm);
 }
 
 // Splits the face of `h` (a triangle whose edges were split, so a polygon of 4 or 5 vertices) from
@@ -343,7 +375,6 @@ embed_slice_cut(TriangleMesh& tm, const Slice_cut<Layout>& cut, typename Layout:
   typedef typename Layout::halfedge_descriptor halfedge_descriptor;
   typedef typename Layout::vertex_descriptor vertex_descriptor;
   typedef typename Layout::face_descriptor face_descriptor;
-  auto vpm = get(CGAL::vertex_point, tm);
   // the faces the cut goes through, in order (face descriptors survive the edge splits)
   std::vector<face_descriptor> faces;
   for(const auto& c : cut.crossings) faces.push_back(face(c.first, tm));
@@ -353,17 +384,9 @@ embed_slice_cut(TriangleMesh& tm, const Slice_cut<Layout>& cut, typename Layout:
   const face_descriptor outer = beyond_face ? face(beyond, tm) : face_descriptor();
   // the edge splits
   std::vector<vertex_descriptor> path{v};
-  auto split_edge_at = [&](halfedge_descriptor h, const typename Layout::Point_3& q) {
-    const bool was_feature = get(feature, edge(h, tm));
-    const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tm); // source(h) -> m, then h: m -> target
-    put(vpm, target(hnew, tm), q);
-    put(feature, edge(hnew, tm), was_feature);
-    put(feature, edge(h, tm), was_feature);
-    return target(hnew, tm);
-  };
-  for(const auto& c : cut.crossings) path.push_back(split_edge_at(c.first, c.second));
+  for(const auto& c : cut.crossings) path.push_back(split_edge_at(tm, c.first, c.second, feature));
   const vertex_descriptor x = source(cut.landing_halfedge, tm), y = target(cut.landing_halfedge, tm);
-  const vertex_descriptor m = split_edge_at(cut.landing_halfedge, cut.point);
+  const vertex_descriptor m = split_edge_at(tm, cut.landing_halfedge, cut.point, feature);
   inserted[std::make_pair((std::min)(x, y), (std::max)(x, y))] = m;
   path.push_back(m);
   // each face split along the cut
@@ -500,7 +523,6 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
   typedef Patch_layout<TriangleMesh, GeomTraits> Layout;
   typedef typename Layout::halfedge_descriptor halfedge_descriptor;
   typedef typename Layout::vertex_descriptor vertex_descriptor;
-  typedef typename Layout::face_descriptor face_descriptor;
   typedef typename Layout::Point_3 Point_3;
   CGAL::Real_timer timer;
   timer.start();
@@ -563,22 +585,15 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
           }
           return traced.point(target(L[k], tmesh));
         };
-        const double reach = 2. * internal::landing_reach *
-          (std::max)(std::sqrt(CGAL::to_double(CGAL::squared_distance(pv, traced.point(source(L[i], tmesh))))),
-                     std::sqrt(CGAL::to_double(CGAL::squared_distance(pv, traced.point(target(L[(i + 1) % L.size()], tmesh))))));
+        const double reach =
+          2. * internal::landing_reach * internal::longer_boundary_edge(tmesh, traced, L[i], L[(i + 1) % L.size()]);
         internal::Slice_cut<Layout> best;
         for(bool backwards : {true, false}) {
           const auto d = pv - side_end(backwards);
           if(CGAL::to_double(d * d) == 0.) continue;
           internal::Slice_cut<Layout> cut = internal::slice_cut(tmesh, traced, L, i, d, reach);
-          if(!cut.found) continue;
-          // its vertices: v, the ends of the edges it splits, the third vertex beyond the boundary edge
-          std::vector<vertex_descriptor> around{v, source(cut.landing_halfedge, tmesh), target(cut.landing_halfedge, tmesh)};
-          if(!is_border(opposite(cut.landing_halfedge, tmesh), tmesh))
-            around.push_back(target(next(opposite(cut.landing_halfedge, tmesh), tmesh), tmesh));
-          for(const auto& c : cut.crossings) around.insert(around.end(), {source(c.first, tmesh), target(c.first, tmesh)});
-          if(std::any_of(around.begin() + 1, around.end(), is_touched)) continue;
-          if(!best.found || cut.landing_skew < best.landing_skew) { best = std::move(cut); best.vertices = std::move(around); }
+          if(!cut.found || std::any_of(cut.vertices.begin() + 1, cut.vertices.end(), is_touched)) continue;
+          if(!best.found || cut.landing_skew < best.landing_skew) best = std::move(cut);
         }
         if(!best.found) return;
         touched.insert(touched.end(), best.vertices.begin(), best.vertices.end());
@@ -607,26 +622,15 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
     auto vpm = get(CGAL::vertex_point, tmesh);
     std::map<std::pair<vertex_descriptor, vertex_descriptor>, vertex_descriptor> inserted;
     for(const auto& s : splits) {
-      const halfedge_descriptor h = s.first;
+      const halfedge_descriptor h = s.first, o = opposite(h, tmesh);
       const vertex_descriptor a = source(h, tmesh), b = target(h, tmesh);
-      const bool was_feature = get(edge_is_feature_map, edge(h, tmesh));
-      const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tmesh); // a -> m, then h: m -> b
-      const vertex_descriptor m = target(hnew, tmesh);
-      put(vpm, m, s.second);
-      put(edge_is_feature_map, edge(hnew, tmesh), was_feature);
-      put(edge_is_feature_map, edge(h, tmesh), was_feature);
+      // the third vertices of the faces beside the edge, each cut from the new vertex m to it
+      const vertex_descriptor za = is_border(h, tmesh) ? vertex_descriptor() : target(next(h, tmesh), tmesh);
+      const vertex_descriptor zb = is_border(o, tmesh) ? vertex_descriptor() : target(next(o, tmesh), tmesh);
+      const vertex_descriptor m = internal::split_edge_at(tmesh, h, s.second, edge_is_feature_map); // h: m -> b
       inserted[std::make_pair((std::min)(a, b), (std::max)(a, b))] = m;
-      // each face beside the edge is cut from m to its opposite vertex; both parts keep its field
-      for(const halfedge_descriptor side : {h, opposite(h, tmesh)}) {
-        if(is_border(side, tmesh)) continue;
-        const face_descriptor f = face(side, tmesh);
-        const auto direction = get(field, f);
-        const halfedge_descriptor cut = side == h ? CGAL::Euler::split_face(hnew, next(h, tmesh), tmesh)
-                                                  : CGAL::Euler::split_face(side, next(next(side, tmesh), tmesh), tmesh);
-        put(edge_is_feature_map, edge(cut, tmesh), false);
-        put(field, face(cut, tmesh), direction);
-        put(field, face(opposite(cut, tmesh), tmesh), direction);
-      }
+      if(!is_border(h, tmesh)) internal::split_face_towards(tmesh, prev(h, tmesh), za, edge_is_feature_map, field);
+      if(!is_border(o, tmesh)) internal::split_face_towards(tmesh, o, zb, edge_is_feature_map, field);
     }
 
     // the straight cuts made paths of mesh edges
@@ -660,13 +664,7 @@ refine_patch_layout(TriangleMesh& tmesh, EdgeIsFeatureMap edge_is_feature_map, F
       if(!is_border(h, tmesh) && refined->is_cut(edge(h, tmesh))) refined->add_corner(h);
     // and each straight cut, if it lowers the number of invalid patches where it is
     for(std::vector<vertex_descriptor>& vs : straight_cuts) {
-      typename Layout::Path q;
-      for(std::size_t k = 0; k + 1 < vs.size(); ++k) {
-        const auto e = get(vpm, vs[k + 1]) - get(vpm, vs[k]);
-        const double l = std::sqrt(CGAL::to_double(e * e));
-        q.directions.push_back(l > 0. ? e / l : e);
-      }
-      q.vertices = std::move(vs);
+      typename Layout::Path q = internal::straight_path(*refined, std::move(vs));
       typename Layout::Patch_change change = refined->preview_add_path(q);
       std::size_t before = 0, after = 0;
       for(std::size_t p : change.old_patches) before += refined->validity(p) != Layout::SATISFIED;

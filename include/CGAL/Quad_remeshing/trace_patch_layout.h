@@ -420,25 +420,14 @@ public:
 
   typedef decltype(std::declval<typename Layout::Point_3>() - std::declval<typename Layout::Point_3>()) Vector;
 
-  // the path along `vs`, each edge with its own unit direction (the last-resort cuts do not follow the field)
-  Path straight_path(std::vector<vertex_descriptor> vs) const
-  {
-    Path q;
-    q.vertices = std::move(vs);
-    for(std::size_t i = 0; i + 1 < q.vertices.size(); ++i) {
-      const Vector e = layout_.point(q.vertices[i + 1]) - layout_.point(q.vertices[i]);
-      const double l = std::sqrt(CGAL::to_double(e * e));
-      q.directions.push_back(l > 0. ? e / l : e);
-    }
-    return q;
-  }
-  // the straight path from the source of a search to vertex index `end`, along the predecessors `pred`
+  // the straight path (internal::straight_path()) from the source of a search to vertex index `end`, along
+  // the predecessors `pred`
   Path straight_path_to(std::size_t end, const std::vector<std::size_t>& pred) const
   {
     std::vector<vertex_descriptor> vs;
     for(std::size_t v = end; v != std::size_t(-1); v = pred[v]) vs.push_back(verts_[v]);
     std::reverse(vs.begin(), vs.end());
-    return straight_path(std::move(vs));
+    return internal::straight_path(layout_, std::move(vs));
   }
 
   // Adds the edges between `region` faces and the other faces of patch `p` as one-edge paths.
@@ -455,7 +444,7 @@ public:
         if(in_region[get(findex, f)] && !in_region[get(findex, face(o, tm_))]) cut.push_back({source(h, tm_), target(h, tm_)});
       }
     for(const auto& e : cut) {
-      Path q = straight_path({e.first, e.second});
+      Path q = internal::straight_path(layout_, {e.first, e.second});
       auto c = layout_.preview_add_path(q);
       layout_.add_path(std::move(q), std::move(c));
       ++added;
